@@ -1,0 +1,92 @@
+# One command reproduces every figure and table, another runs the tests:
+#   make figures   deps -> build -> every driver -> plots -> check against published numbers
+#   make test      deps -> build -> GoogleTest (ctest) -> quick smoke run of every driver -> quick check
+# Other targets: make check, make paper, make bench, make deps, make clean.
+# Make's dependency graph reruns a driver only when its binary changed; `make -j2 figures` works.
+
+PY      := /usr/bin/python3
+BUILD   := build
+BIN     := $(BUILD)/bin
+JOBS    ?= 2
+RESULTS ?= results
+FIGURES ?= figures
+# Set by `make test` (quick mode): extra flags for every driver.
+DRIVER_FLAGS ?=
+CHECK_FLAGS  ?=
+
+DEB_PACKAGES := cmake make g++ git pkg-config libeigen3-dev libgsl-dev libhdf5-dev libcli11-dev \
+                libgtest-dev libbenchmark-dev python3-matplotlib python3-pandas
+
+include experiments/targets.mk
+
+DONE    = $(foreach t,$(TARGETS),$(RESULTS)/$(t)/.done)
+FIGS    = $(foreach t,$(TARGETS),$(FIGURES)/$(t).png)
+
+.PHONY: all figures test check paper bench deps build configure ctest results plots quick clean help
+.DEFAULT_GOAL := help
+
+help:
+	@sed -n '1,6p' Makefile | sed 's/^# \{0,1\}//'
+
+# ---------------------------------------------------------------------------------------------------
+# Set-up: Debian packages (apt) and the Python that can import matplotlib and pandas.
+deps:
+	@missing=$$(for p in $(DEB_PACKAGES); do dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "make deps: installing" $$missing; \
+	  SUDO=; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+	@$(PY) -c 'import matplotlib, pandas' || { echo "make deps: $(PY) cannot import matplotlib and pandas"; exit 1; }
+
+configure: $(BUILD)/CMakeCache.txt
+$(BUILD)/CMakeCache.txt: CMakeLists.txt
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+# ---------------------------------------------------------------------------------------------------
+# Drivers -> results/<target>/ -> plots/<target>.py -> figures/<target>.png
+define target_rules
+$(RESULTS)/$(1)/.done: $(foreach d,$($(1)_DRIVERS),$(BIN)/$(d))
+	@mkdir -p $$(@D)
+	$(foreach d,$($(1)_DRIVERS),$(BIN)/$(d) --out $$(@D) $(if $(DRIVER_FLAGS),$(DRIVER_FLAGS),$($(d)_ARGS)) &&) touch $$@
+$(FIGURES)/$(1).png: plots/$(1).py plots/plotstyle.py $(RESULTS)/$(1)/.done
+	@mkdir -p $(FIGURES)
+	$(PY) plots/$(1).py --results $(RESULTS)/$(1) --figures $(FIGURES)
+endef
+$(foreach t,$(TARGETS),$(eval $(call target_rules,$(t))))
+
+results: $(DONE)
+plots: $(FIGS)
+
+$(RESULTS)/check.csv: $(DONE) reference/check.py $(wildcard reference/*.csv)
+	$(PY) reference/check.py --results $(RESULTS) $(CHECK_FLAGS)
+
+# The main job: everything at paper resolution, then the check (fails the make on any FAIL).
+figures: deps build
+	$(MAKE) --no-print-directory -j $(JOBS) plots
+	$(MAKE) --no-print-directory check
+
+all: figures
+
+check:
+	$(PY) reference/check.py --results $(RESULTS) $(CHECK_FLAGS)
+
+# The tests: unit tests, then every driver in --quick mode with its plot, then the quick check.
+ctest: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+quick:
+	$(MAKE) --no-print-directory -j $(JOBS) RESULTS=results/quick FIGURES=results/quick/figures DRIVER_FLAGS=--quick plots
+	$(MAKE) --no-print-directory RESULTS=results/quick CHECK_FLAGS=--quick check
+
+test: deps build ctest quick
+
+# The reproduction report (HTML; see paper/README.md for why not LaTeX).
+paper: $(RESULTS)/check.csv
+	$(PY) paper/build_report.py --results $(RESULTS) --figures $(FIGURES) --reference reference --out paper/build/index.html
+
+clean:
+	rm -rf $(BUILD) results figures paper/build

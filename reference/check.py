@@ -1,0 +1,164 @@
+#!/usr/bin/env python3
+"""Compare reproduced values with the published numbers in reference/*.csv.
+
+Reference rows (one CSV per target, reference/<target>.csv; '#' lines are comments):
+  target, quantity, published, unit, compare, tolerance, why_tolerance, source,
+  expect, alt_quantity, analysis_value, explanation, quick
+compare:  abs  |reproduced - published| <= tolerance
+          rel  |reproduced - published| <= tolerance * |published|
+          le   reproduced <= published + tolerance   (a published bound or claim)
+          ge   reproduced >= published - tolerance
+expect:   match        out of tolerance is a FAIL
+          discrepancy  the published number is known not to reproduce; the row is DISCREPANCY when it does
+                       not, and still FAILs unless the analysis holds: alt_quantity (a value the driver
+                       computes under the reading that does reproduce the published number) must match
+                       the published value, or, where no reading reproduces it, the reproduced value must
+                       match analysis_value (the number the analysis predicts) within the tolerance.
+quick:    no = not checked in --quick mode (the quick run cannot resolve it); anything else = checked.
+
+Reproduced values come from results/<target>/values_*.csv (quantity,value,note) written by the drivers.
+Writes <results>/check.csv with columns target,quantity,published,reproduced,tolerance,status,source,note,
+prints the table and a summary, and exits 1 on any FAIL.
+"""
+import argparse
+import csv
+import glob
+import math
+import os
+import sys
+
+import pandas as pd
+
+OUT_COLUMNS = ["target", "quantity", "published", "reproduced", "tolerance", "status", "source", "note"]
+REF_COLUMNS = ["target", "quantity", "published", "unit", "compare", "tolerance", "why_tolerance", "source",
+               "expect", "alt_quantity", "analysis_value", "explanation", "quick"]
+
+
+def load_reference(ref_dir):
+    frames = []
+    for path in sorted(glob.glob(os.path.join(ref_dir, "*.csv"))):
+        df = pd.read_csv(path, comment="#", dtype=str, keep_default_na=False, skipinitialspace=True)
+        missing = [c for c in REF_COLUMNS if c not in df.columns]
+        if missing:
+            sys.exit(f"check: {path} lacks columns {missing}")
+        df["ref_file"] = os.path.basename(path)
+        frames.append(df)
+    if not frames:
+        sys.exit(f"check: no reference files in {ref_dir}")
+    ref = pd.concat(frames, ignore_index=True)
+    dup = ref[ref.duplicated(["target", "quantity"], keep=False)]
+    if len(dup):
+        sys.exit(f"check: duplicate reference rows:\n{dup[['target', 'quantity']]}")
+    return ref
+
+
+def load_values(results_dir):
+    values = {}
+    for path in sorted(glob.glob(os.path.join(results_dir, "*", "values_*.csv"))):
+        target = os.path.basename(os.path.dirname(path))
+        df = pd.read_csv(path, comment="#", dtype={"quantity": str, "note": str}, keep_default_na=False)
+        for _, r in df.iterrows():
+            key = (target, r["quantity"])
+            if key in values:
+                sys.exit(f"check: {target}/{r['quantity']} written twice ({path})")
+            values[key] = float(r["value"])
+    return values
+
+
+def within(compare, reproduced, published, tol):
+    if not math.isfinite(reproduced):
+        return False
+    if compare == "abs":
+        return abs(reproduced - published) <= tol
+    if compare == "rel":
+        return abs(reproduced - published) <= tol * abs(published)
+    if compare == "le":
+        return reproduced <= published + tol
+    if compare == "ge":
+        return reproduced >= published - tol
+    raise ValueError(f"unknown compare '{compare}'")
+
+
+def describe_tolerance(compare, tol):
+    return {"abs": f"abs {tol:g}", "rel": f"rel {tol:g}", "le": f"<= published + {tol:g}",
+            "ge": f">= published - {tol:g}"}[compare]
+
+
+def check_row(row, values):
+    target, q = row["target"], row["quantity"]
+    published, tol, compare = float(row["published"]), float(row["tolerance"] or 0), row["compare"]
+    reproduced = values.get((target, q))
+    out = {"target": target, "quantity": q, "published": row["published"],
+           "reproduced": "" if reproduced is None else f"{reproduced:.6g}",
+           "tolerance": describe_tolerance(compare, tol), "source": row["source"]}
+    if reproduced is None:
+        return {**out, "status": "FAIL", "note": "no reproduced value (driver did not write it)"}
+    ok = within(compare, reproduced, published, tol)
+    expect = row["expect"] or "match"
+    if expect == "match":
+        note = row["why_tolerance"] if ok else f"out of tolerance; {row['why_tolerance']}"
+        return {**out, "status": "PASS" if ok else "FAIL", "note": note}
+    if expect != "discrepancy":
+        raise ValueError(f"{target}/{q}: expect must be match or discrepancy, not '{expect}'")
+    if ok:
+        return {**out, "status": "PASS",
+                "note": "recorded as a discrepancy but now reproduces: review reference/" + row["ref_file"]}
+    # The discrepancy must be explained by a check that can itself fail.
+    alt, analysis = row["alt_quantity"], row["analysis_value"]
+    if alt:
+        alt_value = values.get((target, alt))
+        if alt_value is None:
+            return {**out, "status": "FAIL", "note": f"discrepancy reading '{alt}' not computed"}
+        if not within(compare, alt_value, published, tol):
+            return {**out, "status": "FAIL",
+                    "note": f"discrepancy reading '{alt}' = {alt_value:.6g} does not reproduce the published value either"}
+        return {**out, "status": "DISCREPANCY", "note": f"{row['explanation']} [{alt} = {alt_value:.6g}]"}
+    if analysis:
+        a = float(analysis)
+        if not within("abs" if compare in ("le", "ge") else compare, reproduced, a, tol if tol else 1e-9):
+            return {**out, "status": "FAIL", "note": f"reproduced differs from the analysis value {a:g}"}
+        return {**out, "status": "DISCREPANCY", "note": row["explanation"]}
+    raise ValueError(f"{target}/{q}: a discrepancy row needs alt_quantity or analysis_value")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--results", default="results")
+    ap.add_argument("--reference", default=os.path.dirname(os.path.abspath(__file__)))
+    ap.add_argument("--quick", action="store_true", help="skip rows marked quick=no")
+    ap.add_argument("--targets", nargs="*", help="only these targets")
+    args = ap.parse_args()
+
+    ref = load_reference(args.reference)
+    values = load_values(args.results)
+    rows = []
+    for _, r in ref.iterrows():
+        if args.targets and r["target"] not in args.targets:
+            continue
+        if args.quick and r["quick"].strip().lower() == "no":
+            continue
+        rows.append(check_row(r, values))
+    out_path = os.path.join(args.results, "check.csv")
+    os.makedirs(args.results, exist_ok=True)
+    with open(out_path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=OUT_COLUMNS)
+        w.writeheader()
+        w.writerows(rows)
+
+    table = pd.DataFrame(rows, columns=OUT_COLUMNS)
+    with pd.option_context("display.max_rows", None, "display.max_colwidth", 60, "display.width", 250):
+        print(table[["target", "quantity", "published", "reproduced", "tolerance", "status"]].to_string(index=False))
+    referenced = {(r["target"], r["quantity"]) for r in rows} | {
+        (t, a) for t, a in zip(ref["target"], ref["alt_quantity"]) if a}
+    unreferenced = sorted(k for k in values if k not in referenced and (not args.targets or k[0] in args.targets))
+    counts = table["status"].value_counts()
+    n = {s: int(counts.get(s, 0)) for s in ("PASS", "DISCREPANCY", "FAIL")}
+    print(f"\ncheck: {len(rows)} rows: {n['PASS']} PASS, {n['DISCREPANCY']} DISCREPANCY, {n['FAIL']} FAIL"
+          f"  ({len(unreferenced)} further reproduced values without a published counterpart) -> {out_path}")
+    for _, r in table[table.status == "FAIL"].iterrows():
+        print(f"  FAIL {r.target}/{r.quantity}: {r.note}")
+    return 1 if n["FAIL"] else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

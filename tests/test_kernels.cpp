@@ -1,0 +1,76 @@
+// Cover functions: normalisation in 1, 2, 3 dimensions, derivatives against finite differences, and the
+// closed-form constants against quadrature.
+#include <gtest/gtest.h>
+
+#include "kernels.hpp"
+
+namespace {
+
+template <class K>
+class KernelTest : public ::testing::Test {};
+using AllKernels = ::testing::Types<sph::CubicSpline, sph::Lucy, sph::Gaussian, sph::Mollifier, sph::ModifiedMollifier>;
+TYPED_TEST_SUITE(KernelTest, AllKernels);
+
+// integral of W over R^d = S_d integral_0^R W(r) r^(d-1) dr, by composite Simpson on a fine grid
+// (independent of the GSL quadrature used to normalise the mollifiers).
+template <class K>
+double integral(const K& k, double h) {
+  const int n = 20000;
+  const double R = k.support() * h, dr = R / n;
+  double s = 0;
+  for (int i = 0; i <= n; ++i) {
+    // The truncated Gaussian jumps to 0 at its support radius: take the left limit there.
+    const double r = (i == n) ? std::nextafter(R, 0.0) : i * dr;
+    const double wgt = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+    s += wgt * k.W(r, h) * std::pow(r, k.dim() - 1);
+  }
+  return sph::unit_sphere_measure(k.dim()) * s * dr / 3.0;
+}
+
+TYPED_TEST(KernelTest, NormalisedInEveryDimension) {
+  for (int dim = 1; dim <= 3; ++dim) {
+    const TypeParam k(dim);
+    for (double h : {0.3, 1.0, 2.5}) EXPECT_NEAR(integral(k, h), 1.0, 1e-9) << "dim " << dim << " h " << h;
+  }
+}
+
+TYPED_TEST(KernelTest, DerivativesMatchFiniteDifferences) {
+  for (int dim = 1; dim <= 3; ++dim) {
+    const TypeParam k(dim);
+    const double h = 1.3, eps = 1e-5 * h;
+    for (double q = 0.05; q < k.support() - 0.05; q += 0.0731) {
+      const double r = q * h;
+      const double fd1 = (k.W(r + eps, h) - k.W(r - eps, h)) / (2 * eps);
+      const double fd2 = (k.dWdr(r + eps, h) - k.dWdr(r - eps, h)) / (2 * eps);
+      const double scale = k.W(0, h) / h;
+      // Central differences carry O(eps^2) truncation error, large where the mollifiers steepen near
+      // q = 1: an absolute floor plus a relative part.
+      EXPECT_NEAR(k.dWdr(r, h), fd1, 1e-7 * scale + 1e-7 * std::abs(fd1)) << "q " << q;
+      EXPECT_NEAR(k.d2Wdr2(r, h), fd2, 1e-7 * scale / h + 1e-7 * std::abs(fd2)) << "q " << q;
+    }
+  }
+}
+
+TYPED_TEST(KernelTest, VanishesOutsideSupportAndIsRadiallyDecreasing) {
+  const TypeParam k(2);
+  EXPECT_EQ(k.W(k.support() * 1.0001, 1.0), 0.0);
+  EXPECT_EQ(k.dWdr(k.support() * 1.0001, 1.0), 0.0);
+  for (double q = 0.01; q < k.support(); q += 0.05) EXPECT_LE(k.dWdr(q, 1.0), 0.0) << q;
+}
+
+TEST(KernelConstants, ClosedFormsEqualQuadrature) {
+  for (int dim = 1; dim <= 3; ++dim) {
+    EXPECT_NEAR(sph::CubicSplineShape::normalisation(dim), sph::numerical_normalisation<sph::CubicSplineShape>(dim), 1e-12);
+    EXPECT_NEAR(sph::LucyShape::normalisation(dim), sph::numerical_normalisation<sph::LucyShape>(dim), 1e-12);
+  }
+  // Gray et al. 2001 eq (3.3): 10 / (7 pi h^2) at the origin in 2D.
+  EXPECT_DOUBLE_EQ(sph::CubicSpline(2).W(0.0, 1.0), 10.0 / (7.0 * M_PI));
+}
+
+TEST(KernelConstants, RejectsBadDimensionAndName) {
+  EXPECT_THROW(sph::CubicSpline(4), std::invalid_argument);
+  EXPECT_THROW(sph::with_kernel("quintic", 2, [](auto) { return 0; }), std::invalid_argument);
+  EXPECT_EQ(sph::with_kernel("lucy", 2, [](auto k) { return k.support(); }), 1.0);
+}
+
+}  // namespace
