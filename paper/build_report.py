@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+"""Assemble the reproduction report: one self-contained HTML page.
+
+For every target in paper/targets.csv: its description (choices made where the papers are silent), its
+figures (figures/<target>*.png, embedded), and the table of published against reproduced values from
+results/check.csv with the discrepancy analyses. HTML rather than LaTeX: the report then needs nothing
+beyond the Python already used for the plots (TeX Live is ~1 GB of packages), opens in any browser, and
+is a single file that can be attached to a paper's supplementary material.
+"""
+import argparse
+import base64
+import glob
+import html
+import os
+import subprocess
+import sys
+
+import pandas as pd
+
+STATUS_COLOUR = {"PASS": "#1a7f37", "DISCREPANCY": "#9a6700", "FAIL": "#cf222e"}
+
+
+def code_version(root):
+    try:
+        return subprocess.run(["git", "-C", root, "describe", "--always", "--dirty", "--abbrev=12"],
+                              capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def figure_html(path):
+    with open(path, "rb") as f:
+        data = base64.b64encode(f.read()).decode()
+    name = os.path.basename(path)
+    return f'<figure><img src="data:image/png;base64,{data}" alt="{name}"><figcaption>{name}</figcaption></figure>'
+
+
+def table_html(rows):
+    head = "".join(f"<th>{c}</th>" for c in ["quantity", "published", "reproduced", "tolerance", "status", "source", "note"])
+    body = []
+    for _, r in rows.iterrows():
+        colour = STATUS_COLOUR.get(r.status, "black")
+        status = f'<b style="color:{colour}">{html.escape(r.status)}</b>'
+        cells = [html.escape(str(c)) for c in (r.quantity, r.published, r.reproduced, r.tolerance)]
+        cells += [status, html.escape(r.source), html.escape(r.note)]
+        body.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
+    return f"<table><tr>{head}</tr>{''.join(body)}</table>"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--results", default="results")
+    ap.add_argument("--figures", default="figures")
+    ap.add_argument("--reference", default="reference")
+    ap.add_argument("--out", default="paper/build/index.html")
+    args = ap.parse_args()
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+    check_path = os.path.join(args.results, "check.csv")
+    if not os.path.exists(check_path):
+        sys.exit(f"build_report: {check_path} missing: run make figures (or make check) first")
+    check = pd.read_csv(check_path, dtype=str, keep_default_na=False)
+    targets = pd.read_csv(os.path.join(root, "paper", "targets.csv"), dtype=str, keep_default_na=False)
+    counts = check.status.value_counts()
+
+    parts = [f"""<!doctype html><html><head><meta charset="utf-8"><title>SPH elastic dynamics: reproduction report</title>
+<style>body{{font-family:sans-serif;max-width:1200px;margin:auto;padding:1em;line-height:1.4}}
+table{{border-collapse:collapse;font-size:0.85em;margin:0.5em 0}}td,th{{border:1px solid #ccc;padding:3px 6px;vertical-align:top}}
+th{{background:#f3f3f3}}figure{{display:inline-block;margin:0.5em}}img{{max-width:100%}}figcaption{{font-size:0.75em;color:#666}}
+.summary{{font-size:1.1em}}</style></head><body>
+<h1>SPH for elastic solids: reproduction report</h1>
+<p>Gray, Monaghan &amp; Swift 2001; Hoover, Hoover &amp; Merritt 2004; Ismail 2009. Code version
+<code>{html.escape(code_version(root))}</code>. Every number below was computed by the drivers in
+<code>experiments/</code> and compared by <code>reference/check.py</code> with the published values in
+<code>reference/</code>. PASS: within the stated tolerance. DISCREPANCY: the published number does not reproduce; the
+note gives the analysis and the reading that does reproduce it, which is itself checked. FAIL: neither.</p>
+<p class="summary">{len(check)} checks: {counts.get('PASS', 0)} PASS, {counts.get('DISCREPANCY', 0)} DISCREPANCY,
+{counts.get('FAIL', 0)} FAIL.</p>"""]
+    parts.append("<h2>Contents</h2><ul>" + "".join(
+        f'<li><a href="#{t.target}">{html.escape(t.target)}: {html.escape(t.title)}</a></li>' for _, t in targets.iterrows()) + "</ul>")
+    for _, t in targets.iterrows():
+        parts.append(f'<h2 id="{t.target}">{html.escape(t.target)}: {html.escape(t.title)}</h2>')
+        parts.append(f"<p><i>{html.escape(t.work)}</i></p><p>{html.escape(t.description)}</p>")
+        for fig in sorted(glob.glob(os.path.join(args.figures, f"{t.target}.png"))) + \
+                sorted(glob.glob(os.path.join(args.figures, f"{t.target}_*.png"))):
+            parts.append(figure_html(fig))
+        rows = check[check.target == t.target]
+        parts.append(table_html(rows) if len(rows) else "<p>No published numbers are checked for this target.</p>")
+    parts.append("</body></html>")
+    os.makedirs(os.path.dirname(args.out), exist_ok=True)
+    with open(args.out, "w") as f:
+        f.write("\n".join(parts))
+    print(f"build_report: wrote {args.out} ({len(targets)} targets, {len(check)} checks)")
+
+
+if __name__ == "__main__":
+    main()
