@@ -5,15 +5,23 @@
 
 namespace sph {
 
+// A header value on one line: a line break inside it would end the comment and turn the rest into a
+// table line (read as the column names).
+static std::string one_line(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
 CsvWriter::CsvWriter(const std::filesystem::path& path, const RunInfo& info, std::vector<std::string> columns)
     : path_(path), ncols_(columns.size()) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   out_.open(path);
   if (!out_) throw std::runtime_error("cannot write " + path.string());
-  out_ << "# driver = " << info.driver << "\n# target = " << info.target << "\n";
-  if (!info.description.empty()) out_ << "# description = " << info.description << "\n";
+  out_ << "# driver = " << one_line(info.driver) << "\n# target = " << one_line(info.target) << "\n";
+  if (!info.description.empty()) out_ << "# description = " << one_line(info.description) << "\n";
   out_ << "# code_version = " << code_version() << "\n# date = " << utc_timestamp() << "\n";
-  for (const auto& [k, v] : info.parameters) out_ << "# param." << k << " = " << v << "\n";
+  for (const auto& [k, v] : info.parameters) out_ << "# param." << one_line(k) << " = " << one_line(v) << "\n";
   for (std::size_t i = 0; i < columns.size(); ++i) out_ << (i ? "," : "") << quote(columns[i]);
   out_ << "\n";
 }
@@ -52,20 +60,45 @@ static std::vector<std::string> split_csv_line(const std::string& line) {
   return cells;
 }
 
+// True when `line` ends inside a quoted cell: an odd number of '"' (an escaped "" counts twice).
+static bool inside_quotes(const std::string& line) {
+  std::size_t n = 0;
+  for (char c : line) n += (c == '"');
+  return n % 2 != 0;
+}
+
 CsvTable read_csv(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path.string());
   CsvTable t;
   std::string line;
+  std::size_t lineno = 0;
   while (std::getline(in, line)) {
+    ++lineno;
     if (line.empty()) continue;
     if (line[0] == '#') {
       const auto eq = line.find(" = ");
       if (eq != std::string::npos) t.meta.emplace_back(line.substr(2, eq - 2), line.substr(eq + 3));
       continue;
     }
-    if (t.columns.empty()) t.columns = split_csv_line(line);
-    else t.rows.push_back(split_csv_line(line));
+    // A quoted cell may hold line breaks (the writer quotes them): join the physical lines.
+    const std::size_t first = lineno;
+    std::string more;
+    while (inside_quotes(line)) {
+      if (!std::getline(in, more))
+        throw std::runtime_error(path.string() + ":" + std::to_string(first) + ": unterminated quoted cell");
+      ++lineno;
+      line += "\n" + more;
+    }
+    if (t.columns.empty()) {
+      t.columns = split_csv_line(line);
+    } else {
+      t.rows.push_back(split_csv_line(line));
+      if (t.rows.back().size() != t.columns.size())
+        throw std::runtime_error(path.string() + ":" + std::to_string(first) + ": row has " +
+                                 std::to_string(t.rows.back().size()) + " cells, header " +
+                                 std::to_string(t.columns.size()));
+    }
   }
   return t;
 }

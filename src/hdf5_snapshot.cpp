@@ -156,7 +156,12 @@ std::size_t count_snapshots(const std::filesystem::path& h5_path) {
 
 Snapshot read_snapshot(const std::filesystem::path& h5_path, std::size_t index) {
   hid_t f = checked(H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open file");
-  hid_t g = checked(H5Gopen2(f, group_name(index).c_str(), H5P_DEFAULT), "open snapshot group");
+  const std::string name = group_name(index);
+  if (H5Lexists(f, name.c_str(), H5P_DEFAULT) <= 0) {  // a clear message instead of HDF5's error stack
+    H5Fclose(f);
+    throw std::runtime_error(h5_path.string() + " has no snapshot " + std::to_string(index));
+  }
+  hid_t g = checked(H5Gopen2(f, name.c_str(), H5P_DEFAULT), "open snapshot group");
   Snapshot s;
   s.time = read_double_attribute(g, "time");
   s.step = static_cast<long>(read_double_attribute(g, "step"));

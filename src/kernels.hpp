@@ -73,6 +73,7 @@ struct LucyShape {
 /// function numerically, so sum-to-one holds exactly; the function is discontinuous at q = 3 by
 /// exp(-9) ~ 1.2e-4 of its peak. The thesis's closed-form constants (1/sqrt(3) in 1D as printed,
 /// 1/pi, pi^(-3/2)) refer to the untruncated function and are checked separately (I-kern).
+/// The jump also puts a delta in w'': avoid h/dp such that a neighbour sits exactly at q = 3.
 struct GaussianShape {
   static constexpr const char* name = "gaussian";
   static constexpr double support = 3.0;
@@ -83,7 +84,9 @@ struct GaussianShape {
 };
 
 /// Classical mollifier exp(-1/(1 - q^2)), Ismail 2009 eq (2.17); C-infinity with support 1.
-/// No closed-form integral: normalised numerically.
+/// No closed-form integral: normalised numerically. Both mollifiers underflow to exactly 0 in double
+/// precision for q > ~0.9993 (exp(-1/(1-q^2)) < 1e-308), so w, w', w'' are 0 there: a sign scan of w''
+/// must treat exact zeros as "no sign", not as a sign change.
 struct MollifierShape {
   static constexpr const char* name = "mollifier";
   static constexpr double support = 1.0;

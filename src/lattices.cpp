@@ -32,8 +32,12 @@ static double row_shift(LatticeKind kind, long row, double dp) {
   return (row % 2 != 0) ? 0.5 * dp : 0.0;
 }
 
+// Finite and positive (false for NaN and infinity, which would make the generators loop or overflow).
+static bool finite_positive(double v) { return std::isfinite(v) && v > 0; }
+
 std::vector<Vec2> lattice_block(LatticeKind kind, int nx, int ny, double dp, Vec2 origin) {
-  if (nx < 0 || ny < 0 || !(dp > 0)) throw std::invalid_argument("lattice_block: need nx, ny >= 0 and dp > 0");
+  if (nx < 0 || ny < 0 || !finite_positive(dp) || !origin.allFinite())
+    throw std::invalid_argument("lattice_block: need nx, ny >= 0, finite dp > 0 and a finite origin");
   std::vector<Vec2> pts;
   pts.reserve(static_cast<size_t>(nx) * ny);
   const double dy = row_spacing(kind, dp);
@@ -44,15 +48,18 @@ std::vector<Vec2> lattice_block(LatticeKind kind, int nx, int ny, double dp, Vec
 }
 
 std::vector<Vec2> rectangle(LatticeKind kind, double x0, double y0, double Lx, double Ly, double dp) {
-  if (!(dp > 0) || !(Lx > 0) || !(Ly > 0)) throw std::invalid_argument("rectangle: need dp, Lx, Ly > 0");
+  if (!finite_positive(dp) || !finite_positive(Lx) || !finite_positive(Ly) || !std::isfinite(x0) || !std::isfinite(y0))
+    throw std::invalid_argument("rectangle: need finite dp, Lx, Ly > 0 and a finite corner");
   const double dy = row_spacing(kind, dp);
   const int ny = static_cast<int>(std::floor(Ly / dy + 1e-9));
   std::vector<Vec2> pts;
   for (int j = 0; j < ny; ++j) {
     const double y = y0 + (j + 0.5) * dy;
+    // Shifted rows: the lattice point x0 + (-1 + 1/2) dp + dp/2 = x0 also lies in [x0, x0 + Lx); starting
+    // at i = 0 would drop it, leaving those rows one particle short and the block not periodic in x.
     const double shift = row_shift(kind, j, dp);
-    for (int i = 0;; ++i) {
-      const double x = x0 + (i + 0.5) * dp + shift;
+    for (int i = shift > 0 ? -1 : 0;; ++i) {
+      const double x = x0 + ((i + 0.5) * dp + shift);  // grouped: exactly x0 for the first shifted point
       if (x >= x0 + Lx - 1e-9 * dp) break;
       pts.emplace_back(x, y);
     }
@@ -61,7 +68,8 @@ std::vector<Vec2> rectangle(LatticeKind kind, double x0, double y0, double Lx, d
 }
 
 std::vector<Vec2> ring(LatticeKind kind, Vec2 centre, double r_inner, double r_outer, double dp) {
-  if (!(dp > 0) || !(r_outer > r_inner) || r_inner < 0) throw std::invalid_argument("ring: need 0 <= r_inner < r_outer, dp > 0");
+  if (!finite_positive(dp) || !(r_outer > r_inner) || !(r_inner >= 0) || !std::isfinite(r_outer) || !centre.allFinite())
+    throw std::invalid_argument("ring: need 0 <= r_inner < r_outer finite, finite dp > 0 and centre");
   const double dy = row_spacing(kind, dp);
   const long nj = static_cast<long>(std::ceil(r_outer / dy)) + 1;
   const long ni = static_cast<long>(std::ceil(r_outer / dp)) + 1;
@@ -76,7 +84,7 @@ std::vector<Vec2> ring(LatticeKind kind, Vec2 centre, double r_inner, double r_o
 }
 
 std::vector<Vec2> hexagon(int shells, double dp, Vec2 centre) {
-  if (shells < 0 || !(dp > 0)) throw std::invalid_argument("hexagon: need shells >= 0, dp > 0");
+  if (shells < 0 || !finite_positive(dp)) throw std::invalid_argument("hexagon: need shells >= 0, dp > 0");
   // Axial coordinates (a, b) with |a|, |b|, |a + b| <= shells on the basis e1 = (1, 0),
   // e2 = (1/2, sqrt(3)/2).
   std::vector<Vec2> pts;
@@ -89,6 +97,7 @@ std::vector<Vec2> hexagon(int shells, double dp, Vec2 centre) {
 
 std::vector<Vec2> periodic_images(const std::vector<Vec2>& points, double Lx, double Ly, int layers,
                                   bool include_original) {
+  if (layers < 0) throw std::invalid_argument("periodic_images: need layers >= 0");
   std::vector<Vec2> out;
   out.reserve(points.size() * (2 * layers + 1) * (2 * layers + 1));
   for (int j = -layers; j <= layers; ++j)

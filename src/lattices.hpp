@@ -28,7 +28,9 @@ std::vector<Vec2> lattice_block(LatticeKind kind, int nx, int ny, double dp, Vec
 
 /// The lattice points inside the rectangle [x0, x0 + Lx) x [y0, y0 + Ly), first point at
 /// (x0 + dp/2, y0 + dp/2): each particle sits at the centre of its own dp x dp cell (square lattice).
-/// For the other kinds rows are row_spacing apart starting half a row spacing above y0.
+/// For the other kinds rows are row_spacing apart starting half a row spacing above y0; the shifted rows
+/// start at x0 itself, so that with Lx a whole number of dp every row has Lx/dp points and the block tiles
+/// periodically in x (and in y when the number of rows is even).
 std::vector<Vec2> rectangle(LatticeKind kind, double x0, double y0, double Lx, double Ly, double dp);
 
 /// Lattice points with r_inner <= |x - centre| < r_outer, from a lattice of spacing dp through `centre`.

@@ -12,8 +12,13 @@ CellList2D::CellList2D(const Box2& box, double radius) : box_(box), radius_(radi
   if ((box.periodic_x && radius > 0.5 * box.Lx()) || (box.periodic_y && radius > 0.5 * box.Ly()))
     throw std::invalid_argument("CellList2D: search radius " + std::to_string(radius) +
                                 " exceeds half the period; the minimum image would miss neighbours");
-  nx_ = std::max(1, static_cast<int>(std::floor(box.Lx() / radius)));
-  ny_ = std::max(1, static_cast<int>(std::floor(box.Ly() / radius)));
+  // Cells slightly wider than the radius: were the width exactly `radius` (e.g. L = 1, radius = 0.1), the
+  // rounding in cell_index could put two particles a little closer than `radius` two cells apart, and the
+  // 3-cell stencil would miss the pair. The 1e-9 margin covers rounding for positions up to ~1e6 cell
+  // widths from the origin.
+  const double width = radius * (1.0 + 1e-9);
+  nx_ = std::max(1, static_cast<int>(std::floor(box.Lx() / width)));
+  ny_ = std::max(1, static_cast<int>(std::floor(box.Ly() / width)));
   // With fewer than 3 cells in a periodic direction the 3-cell stencil would visit a cell twice:
   // scan that direction's cells once each instead.
   if (box.periodic_x && nx_ < 3) { span_x_ = 0; nx_ = 1; }
@@ -38,6 +43,11 @@ void CellList2D::build(const std::vector<Vec2>& x) {
   for (std::size_t i = 0; i < n; ++i) sorted_[cell_start_[cell_of_[i]]++] = i;
   for (std::size_t c = cell_start_.size() - 1; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
   cell_start_[0] = 0;
+}
+
+void CellList2D::throw_radius_too_large(double radius) const {
+  throw std::invalid_argument("CellList2D: query radius " + std::to_string(radius) +
+                              " exceeds the radius the list was built for, " + std::to_string(radius_));
 }
 
 std::vector<std::vector<std::size_t>> brute_force_neighbours(const std::vector<Vec2>& x, const Box2& box,

@@ -39,8 +39,12 @@ class CellList2D {
   }
 
   /// Calls f(j, d, r) for every particle j != i with r = |d| < radius, d = x_i - x_j (minimum image).
+  /// `radius` must not exceed the radius the list was built for (the stencil would miss pairs): throws.
+  /// A relative excess of 1e-12 (the same radius computed another way) is allowed: the cells have a
+  /// 1e-9 margin (see the constructor).
   template <class F>
   void for_each_neighbour(const std::vector<Vec2>& x, std::size_t i, double radius, F&& f) const {
+    if (radius > radius_ * (1.0 + 1e-12)) throw_radius_too_large(radius);
     const double r2max = radius * radius;
     const int cx = cell_x(x[i].x()), cy = cell_y(x[i].y());
     for (int oy = -span_y_; oy <= span_y_; ++oy) {
@@ -55,7 +59,10 @@ class CellList2D {
           if (j == i) continue;
           const Vec2 d = displacement(x[i], x[j]);
           const double r2 = d.squaredNorm();
-          if (r2 < r2max) f(j, d, std::sqrt(r2));
+          if (r2 >= r2max) continue;
+          // r2 < radius^2 can hold (rounding) with sqrt(r2) == radius: test r itself, as promised.
+          const double r = std::sqrt(r2);
+          if (r < radius) f(j, d, r);
         }
       }
     }
@@ -72,9 +79,12 @@ class CellList2D {
   static int cell_index(double v, double vmin, double L, int n, bool periodic) {
     double t = (v - vmin) / L;
     if (periodic) t -= std::floor(t);
-    int c = static_cast<int>(t * n);
-    return c < 0 ? 0 : (c >= n ? n - 1 : c);
+    // Clamp before converting: a particle far outside a non-periodic box can have t * n beyond the range
+    // of int, and converting that is undefined behaviour.
+    const double c = std::floor(t * n);
+    return c < 0 ? 0 : (c >= n ? n - 1 : static_cast<int>(c));
   }
+  [[noreturn]] void throw_radius_too_large(double radius) const;
   // A periodic direction with fewer than 3 cells is scanned whole once (span 0 covers it: see ctor).
   static int wrap_or_skip(int c, int n, bool periodic) {
     if (c >= 0 && c < n) return c;
