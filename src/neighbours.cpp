@@ -60,4 +60,16 @@ std::vector<std::vector<std::size_t>> brute_force_neighbours(const std::vector<V
   return out;
 }
 
+Box2 bounding_box(const std::vector<Vec2>& points) {
+  if (points.empty()) throw std::invalid_argument("bounding_box: no points");
+  Box2 box;
+  box.xmin = box.xmax = points.front().x();
+  box.ymin = box.ymax = points.front().y();
+  for (const Vec2& p : points) {
+    box.xmin = std::min(box.xmin, p.x()); box.xmax = std::max(box.xmax, p.x());
+    box.ymin = std::min(box.ymin, p.y()); box.ymax = std::max(box.ymax, p.y());
+  }
+  return box;
+}
+
 }  // namespace sph

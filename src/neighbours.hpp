@@ -21,6 +21,9 @@ struct Box2 {
   double Ly() const { return ymax - ymin; }
 };
 
+/// The smallest non-periodic box holding all points (throws on an empty set).
+Box2 bounding_box(const std::vector<Vec2>& points);
+
 class CellList2D {
  public:
   /// `radius` is the largest search radius that queries will use. For a non-periodic direction the box

@@ -300,3 +300,13 @@ TEST(CellList, RebuildAfterMovingParticles) {
 }
 
 }  // namespace
+
+TEST(CellList, BoundingBoxHoldsEveryPointAndRejectsEmpty) {
+  const std::vector<sph::Vec2> pts{{1.0, -2.0}, {-3.0, 4.0}, {0.5, 0.5}};
+  const sph::Box2 b = sph::bounding_box(pts);
+  EXPECT_DOUBLE_EQ(b.xmin, -3.0);
+  EXPECT_DOUBLE_EQ(b.xmax, 1.0);
+  EXPECT_DOUBLE_EQ(b.ymin, -2.0);
+  EXPECT_DOUBLE_EQ(b.ymax, 4.0);
+  EXPECT_THROW(sph::bounding_box({}), std::invalid_argument);
+}
