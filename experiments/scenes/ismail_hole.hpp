@@ -1,0 +1,50 @@
+// Shared scene for Ismail 2009 Section 5.4.4 (Figs 5.13-5.15): a quarter of a square sheet with a central hole
+// under uniaxial traction, run to rest (I-hole drivers, bench_tl_hole).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "total_lagrangian_2d.hpp"
+
+namespace scenes {
+
+struct HoleParams {
+  int n = 21;                 ///< particles along each side of the quarter sheet (Section 5.4.4: 21 x 21)
+  double a = 0.1;             ///< quarter side, m (CHOSEN)
+  double R = 0.025;           ///< hole radius, m (CHOSEN: a/4)
+  double E = 70e6, nu = 0.49, rho = 1000;  ///< Fig 5.13 (rho CHOSEN)
+  double traction = 5e6;      ///< Pa, Section 5.4.4
+  double h_over_ps = 3.5;
+  double dt_factor = 0.3;     ///< dt / (h / c_L)
+  double ramp_transits = 2;   ///< load ramp time in shear transits a / c_T (CHOSEN)
+  double settle = 12;         ///< run on for settle / omega after the ramp (CHOSEN)
+  bool variational = true;    ///< boundary scheme (see total_lagrangian_2d.hpp)
+};
+
+struct HoleResult {
+  int particles = 0, steps = 0;
+  double wall_s = 0, build_s = 0;
+  double peak_sigma1 = 0;          ///< final max principal Cauchy stress over all particles
+  double sigma1_hole_top = 0;      ///< at the particle nearest (0, R)
+  double peak_sigma1_dynamic = 0;  ///< max over the run
+  double smoothed_peak_sigma1 = 0; ///< final max principal of the SPH-smoothed stress over all particles
+  double smoothed_sigma1_hole_top = 0;  ///< smoothed, at the particle nearest (0, R)
+  double zigzag = 0;               ///< RMS of u minus its SPH-smoothed value over RMS u: particle-scale disorder
+  double kinetic_final_rel = 0;    ///< settling: max |v| at the end over max |v| during the run
+  bool finite = true;
+};
+
+/// Runs the sheet; calls snapshot(body, t) at the given times (and at the end).
+HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fractions = {},
+                    const std::function<void(const sph::Body2D&, double)>& snapshot = nullptr);
+
+/// The maximum principal value of a symmetric 2 x 2 stress.
+double max_principal(const sph::Tensor2& T);
+
+/// Heywood's finite-width concentration for a central hole of diameter d in a strip of width W under tension,
+/// on the gross section: K_tg = (2 + (1 - d/W)^3) / (1 - d/W) (-> 3, Kirsch, as d/W -> 0).
+double heywood_gross_concentration(double d_over_W);
+
+}  // namespace scenes
