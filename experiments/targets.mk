@@ -1,24 +1,64 @@
 # The targets of ../shared/reproduction-targets.md that the harness reproduces, and their drivers.
 # For a target T:  TARGETS += T ;  T_DRIVERS := driver names (experiments/<driver>.cpp)
-# Optional:        <driver>_ARGS := extra command-line arguments for the full run
+# Optional:        T_ARGS := extra command-line arguments for T's drivers (quick runs add --quick)
 # Each driver writes into results/T/; plots/T.py turns results/T/ into figures/T*.png.
+# BENCH_DRIVERS: scene benchmarks run by `make bench`, each writing results/bench/<name>.csv.
 
-# Gray et al. 2001 Section 5: dispersion lattice sums
-TARGETS += G-disp
-G-disp_DRIVERS := gray2001_sec5_dispersion
-
+# ---- Cover functions and the stability criterion (library: src/kernels.*, src/interpolation_1d.*) ----
 # Ismail 2009 Figs 2.3-2.8: cover functions, normalisation, share of the support with W'' > 0
 TARGETS += I-kern
 I-kern_DRIVERS := ismail2009_fig2_3to2_8_cover_functions
-
 # Review excerpt eq 5.59 / Ismail eq 4.48: Swegle stability map of each cover function
 TARGETS += R
 R_DRIVERS := review_swegle_stability_map
-
-# I-nh: Ismail 2009 Figs 5.1-5.2, neo-Hookean plane-strain T11(l1) curves and the material code (src/materials.*)
-TARGETS += I-nh
-I-nh_DRIVERS := ismail2009_fig5_1to5_2_neohookean_curves
-
-# I-interp: Ismail 2009 Figs 2.10-2.20, SPH interpolation of (x-0.5)^4, sin x and falling edges (src/interpolation_1d.*)
+# Ismail 2009 Figs 2.10-2.20: SPH interpolation of (x-0.5)^4, sin x and falling edges
 TARGETS += I-interp
 I-interp_DRIVERS := ismail2009_fig2_10to2_20_interpolation
+
+# ---- Gray, Monaghan & Swift 2001 (src/lattice_sums.*, src/gray_solver.*, experiments/scenes/plate*) ----
+# Section 5: dispersion lattice sums
+TARGETS += G-disp
+G-disp_DRIVERS := gray2001_sec5_dispersion
+# Section 7.1: the oscillating plate
+TARGETS += G-tab1 G-tab2 G-fig1 G-fig2 G-fig4 G-fig5 G-stab G-wp
+G-tab1_DRIVERS := gray2001_table1_2_plate_periods
+G-tab1_ARGS := --table 1
+G-tab2_DRIVERS := gray2001_table1_2_plate_periods
+G-tab2_ARGS := --table 2
+G-fig1_DRIVERS := gray2001_fig1_periodic_array
+G-fig2_DRIVERS := gray2001_fig2_3_plate_fracture
+G-fig4_DRIVERS := gray2001_fig4_plate_resolution
+G-fig5_DRIVERS := gray2001_fig5_plate_large_amplitude
+G-stab_DRIVERS := gray2001_plate_stability
+G-wp_DRIVERS := gray2001_plate_work_precision
+BENCH_DRIVERS += bench_gray_scenes
+
+# ---- Hoover, Hoover & Merritt 2004 (src/spam_*, src/rk4.hpp, src/molecular_dynamics.*,
+#      experiments/scenes/hoover2004_hexagon.*). Full-run times on 2 idle cores: H-fig1 ~45 s,
+#      H-fig3 ~15 s, hexagon drivers ~10-60 s each, H-72 ~5-8 min (72 revolutions over 2 threads). ----
+TARGETS += H-fig1 H-fig2 H-fig3 H-fig4 H-fig5 H-fig6 H-fig7 H-gauss H-72
+H-fig1_DRIVERS := hoover2004_fig1_tensile_instability
+H-fig2_DRIVERS := hoover2004_fig2_sheared_square
+H-fig3_DRIVERS := hoover2004_fig3_plane_waves
+H-fig4_DRIVERS := hoover2004_fig4_hexagon_md_spam
+H-fig5_DRIVERS := hoover2004_fig5_velocity_averaging
+H-fig6_DRIVERS := hoover2004_fig6_angular_momentum
+H-fig7_DRIVERS := hoover2004_fig7_torque_scaling
+H-gauss_DRIVERS := hoover2004_gauss_multipliers
+H-72_DRIVERS := hoover2004_72_combinations
+BENCH_DRIVERS += bench_hexagon
+
+# ---- Ismail 2009 total Lagrangian SPH (src/sph_matrices.*, src/boundary_correction.*,
+#      src/total_lagrangian_{1d,2d}.*, src/materials.*) ----
+# Figs 5.1-5.2: neo-Hookean plane-strain T11(l1) curves
+TARGETS += I-nh
+I-nh_DRIVERS := ismail2009_fig5_1to5_2_neohookean_curves
+# Chapter 4: linear elastic bar, heterogeneous bar, tensile bar; chapter 5: neo-Hookean 1D, 2D, hole
+TARGETS += I-bar I-het I-tens I-nh1d I-2d I-hole
+I-bar_DRIVERS := ismail2009_fig4_6to4_14_bar
+I-het_DRIVERS := ismail2009_fig4_15to4_19_heterogeneous
+I-tens_DRIVERS := ismail2009_fig4_20to4_22_tensile
+I-nh1d_DRIVERS := ismail2009_fig5_4to5_6_neohookean_1d
+I-2d_DRIVERS := ismail2009_fig5_7to5_12_neohookean_2d
+I-hole_DRIVERS := ismail2009_fig5_13to5_15_hole ismail2009_fig5_13to5_15_hole_resolution
+BENCH_DRIVERS += bench_tl_bar bench_tl_hole

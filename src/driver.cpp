@@ -26,7 +26,6 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
     return app_.exit(e);
   }
   try {
-    std::filesystem::create_directories(out_);
     body();
     return 0;
   } catch (const std::exception& e) {
@@ -42,6 +41,7 @@ RunInfo Driver::info() const {
 }
 
 CsvWriter Driver::csv(const std::string& filename, std::vector<std::string> columns) const {
+  std::filesystem::create_directories(out_);
   return CsvWriter(out_ / filename, info(), std::move(columns));
 }
 

@@ -44,6 +44,12 @@ class Driver {
   int run(int argc, char** argv, const std::function<void()>& body);
 
   bool quick() const { return quick_; }
+  /// Sets the target id for a driver that serves several targets (e.g. Tables 1 and 2); call before
+  /// writing anything. The default output directory follows unless --out was given.
+  void retarget(const std::string& target) {
+    target_ = target;
+    if (!given("out")) out_ = "results/" + target_;
+  }
   /// True when the user set --<name> on the command line (so --quick must not override it).
   bool given(const std::string& name) const { return app_.count("--" + name) > 0; }
   const std::filesystem::path& out_dir() const { return out_; }

@@ -153,6 +153,12 @@ class Kernel {
   double W(double r, double h) const { return sigma_ / hpow(h) * Shape::w(r / h); }
   double dWdr(double r, double h) const { return sigma_ / (hpow(h) * h) * Shape::dw(r / h); }
   double d2Wdr2(double r, double h) const { return sigma_ / (hpow(h) * h * h) * Shape::d2w(r / h); }
+  /// W and F together (one division, one branch on the support): the pair-list refresh needs both.
+  void W_and_F(double r, double h, double& W, double& F) const {
+    const double inv_h = 1.0 / h, q = r * inv_h, c = sigma_ / hpow(h);
+    W = c * Shape::w(q);
+    F = (q < 1e-12) ? c * inv_h * inv_h * Shape::d2w(0.0) : c * inv_h * inv_h * Shape::dw(q) / q;
+  }
   /// F with grad_a W_ab = r_ab F_ab (Gray et al. 2001 eq 3.2): dW/dr / r, finite at r -> 0.
   double F(double r, double h) const {
     const double q = r / h;

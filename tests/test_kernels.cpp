@@ -74,3 +74,13 @@ TEST(KernelConstants, RejectsBadDimensionAndName) {
 }
 
 }  // namespace
+
+TEST(KernelConstants, FusedWAndFEqualTheSeparateCalls) {
+  const sph::CubicSpline k(2);
+  for (double r : {0.0, 1e-14, 0.3, 0.99, 1.0, 1.7, 2.0, 2.5}) {
+    double W, F;
+    k.W_and_F(r, 1.0, W, F);
+    EXPECT_DOUBLE_EQ(W, k.W(r, 1.0)) << r;
+    EXPECT_DOUBLE_EQ(F, k.F(r, 1.0)) << r;
+  }
+}

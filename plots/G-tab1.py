@@ -1,0 +1,7 @@
+#!/usr/bin/env python3
+"""G-tab1: Gray et al. 2001 Table 1, plate periods against V_f for each mu, with the published values."""
+import plate_plots
+import plotstyle as ps
+
+args = ps.parse_args(__doc__)
+plate_plots.plot_table(args.results, args.figures, "G-tab1", 1)

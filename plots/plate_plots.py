@@ -1,0 +1,62 @@
+"""Shared drawing for the Gray et al. 2001 plate figures (tables, tip traces, configuration frames)."""
+import os
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+
+import plotstyle as ps
+
+
+def published(target):
+    """The reference rows of a target (published numbers), for overlaying on a plot."""
+    path = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "reference", f"{target}.csv")
+    return pd.read_csv(path, comment="#", dtype=str, keep_default_na=False)
+
+
+def plot_table(results, figures, target, table):
+    df = ps.read(results, "periods.csv")
+    ref = published(target)
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
+    ax = axes[0]
+    for i, (mu, g) in enumerate(df.groupby("mu")):
+        c = f"C{i}"
+        ax.plot(g.Vf, g.T_sph, "o-", color=c, label=f"SPH, $\\mu$ = {mu:g}")
+        ax.axhline(g.T_theory_thin.iloc[0], color=c, ls=":", lw=0.8)
+        ax.axhline(g.T_theory_reading.iloc[0], color=c, ls="--", lw=0.8)
+        pub = ref[ref.quantity.str.startswith("T_sph_") & ref.quantity.str.endswith(f"_mu{mu:g}")]
+        if len(pub):
+            vf = [float(q.split("_Vf")[1].split("_mu")[0]) for q in pub.quantity]
+            ax.plot(vf, pub.published.astype(float), "x", color=c, ms=7, label=f"published, $\\mu$ = {mu:g}")
+    ax.set_xlabel("$V_f$")
+    ax.set_ylabel("period T")
+    ax.set_title(f"Table {table}: SPH (o), published (x); theory: H (dotted), H-0.1 (dashed)")
+    ax.legend(ncol=2)
+    ax = axes[1]
+    for name in sorted(os.listdir(results)):
+        if name.startswith("tip_") and name.endswith(".csv"):
+            t = ps.read(results, name)
+            ax.plot(t.t, t.y_tip, lw=0.8, label=name[4:-4])
+    ax.set_xlabel("t")
+    ax.set_ylabel("tip displacement")
+    ax.legend(fontsize=6, ncol=2)
+    ps.save(fig, figures, target, df)
+
+
+def frames_figure(frames, times, title, vlim=None):
+    """Particle configurations at the frame times closest to `times`, coloured by sigma_xx."""
+    avail = np.sort(frames.t.unique())
+    picks = [avail[np.argmin(np.abs(avail - t))] for t in times]
+    fig, axes = plt.subplots(len(picks), 1, figsize=(9, 1.6 * len(picks) + 0.6), sharex=True)
+    axes = np.atleast_1d(axes)
+    v = vlim if vlim is not None else np.nanpercentile(np.abs(frames.sxx), 99)
+    for ax, t in zip(axes, picks):
+        f = frames[frames.t == t]
+        sc = ax.scatter(f.x, f.y, c=f.sxx, s=2, cmap="coolwarm", vmin=-v, vmax=v, linewidths=0)
+        fx = f[f.fixed == 1]
+        ax.scatter(fx.x, fx.y, c="k", s=1, linewidths=0)
+        ax.set_aspect("equal")
+        ax.set_title(f"t = {t:.0f}", fontsize=8)
+    fig.colorbar(sc, ax=axes, label=r"$\sigma_{xx}$ (tension > 0)", shrink=0.8)
+    fig.suptitle(title)
+    return fig
