@@ -4,9 +4,9 @@
 // because of dissipation". The paper gives no viscosity constants: this driver also runs the coarsest n
 // with a list of alpha (beta = alpha) values to show how the decay depends on that choice.
 // Each run also records its wall time, so the same table is the work-precision data (see
-// plots/G-fig4.py); G-wp adds 1- and 2-thread timings.
+// plots/G-fig4.py); G-wp fits the convergence order.
 //
-// Parameters: as gray2001_table1_2_plate_periods. Each run stops at the tip's second zero crossing: one
+// Parameters: as gray2001_table1_2_plate_periods, but each run stops at the tip's second zero crossing: one
 // period, two half-cycle extremes (the decay per period is 1 - (second / first)^2).
 #include <cmath>
 #include <sstream>

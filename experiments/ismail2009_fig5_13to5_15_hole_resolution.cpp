@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   scenes::HoleParams p;
   p.variational = false;
   d.param("n", ns, "particles along a side, one run each");
+  d.param("variational", p.variational, "boundary scheme: variational (true) or ghost reflection (false)");
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("n")) ns = {11, 21};
     auto out = d.csv("resolution.csv", {"n", "particles", "steps", "wall_s", "build_s", "sigma1_hole_top_MPa", "peak_sigma1_MPa",
