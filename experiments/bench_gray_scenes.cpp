@@ -1,8 +1,10 @@
 // Throughput of the Gray et al. 2001 scheme (make bench): particle-steps per second of the
 // predictor-corrector (two force evaluations per step) on 1 and 2 threads, for
-//   rings  the layout of PySPH's rings example (17 592 particles, dp = 0.05): the scene of the speed
+//   rings  the layout of PySPH's rings example (dp = 0.05: 17 582 particles here, 17 592 in PySPH): the scene of the speed
 //          target (PySPH: ~2.7e5 particle-steps/s on 2 cores; ours must reach >= 1.4e6 and scale >= 1.8x)
 //   plate  n = 20 particles across H = 2 (Tables 1-2 at twice the tables' default resolution)
+//   slab   the slab of Figs 8-10 at the paper's dp = 0.016 (11 844 particles, driven end bands, von Mises
+//          return), and without the return (the plastic pass must cost little and nothing when off)
 // and, on the plate, the options switched off one by one: a term that is off must cost nothing.
 // Writes <out>/bench_gray_scenes.csv with the columns of results/bench.csv.
 #include <omp.h>
@@ -13,6 +15,7 @@
 #include "gray_solver.hpp"
 #include "scenes/plate.hpp"
 #include "scenes/rings.hpp"
+#include "scenes/slab.hpp"
 
 namespace {
 
@@ -81,6 +84,24 @@ int main(int argc, char** argv) {
         if (t == 1 && v.name != std::string("artstress+xsph+visc")) continue;  // variants: largest count only
         const auto tm = time_run(plate.body, pp, v.o, t, steps);
         out.row("plate_n20", v.name, tm.particles, tm.steps, t, tm.wall_s, tm.particles * static_cast<double>(tm.steps) / tm.wall_s,
+                "none", NAN);
+      }
+    // Slab of Figs 8-10 at the paper's resolution, with and without the plastic return.
+    scenes::SlabSpec ss;
+    ss.dp = 0.016;
+    const auto slab = scenes::make_slab(ss);
+    sph::GrayParameters sp;
+    sp.mu = 0.3;
+    sp.dp = ss.dp;
+    sp.h = 1.5 * ss.dp;
+    sp.box = slab.box;
+    sph::GrayOptions plastic, elastic;
+    plastic.plasticity = true;
+    for (const Variant& v : {Variant{"artstress+xsph+visc+vonmises", plastic}, Variant{"no plasticity", elastic}})
+      for (int t : threads) {
+        if (t == 1 && !v.o.plasticity) continue;
+        const auto tm = time_run(slab.body, sp, v.o, t, steps);
+        out.row("slab_dp0.016", v.name, tm.particles, tm.steps, t, tm.wall_s, tm.particles * static_cast<double>(tm.steps) / tm.wall_s,
                 "none", NAN);
       }
   });

@@ -31,6 +31,14 @@ G-fig4_DRIVERS := gray2001_fig4_plate_resolution
 G-fig5_DRIVERS := gray2001_fig5_plate_large_amplitude
 G-stab_DRIVERS := gray2001_plate_stability
 G-wp_DRIVERS := gray2001_plate_work_precision
+# Sections 7.2-7.3: colliding rings, the slab with von Mises plasticity (experiments/scenes/rings*, slab*),
+# their stability stress test, and the table of tensile-instability cures (beyond the paper). Full runs on
+# one busy core: G-fig6 ~2 min, G-fig8 ~7 min (dp = 0.032; --dp 0.016 ~8x), G-stab-rs ~3 min, X ~3 min.
+TARGETS += G-fig6 G-fig8 G-stab-rs X
+G-fig6_DRIVERS := gray2001_fig6_7_rings
+G-fig8_DRIVERS := gray2001_fig8_10_slab
+G-stab-rs_DRIVERS := gray2001_rings_slab_stability
+X_DRIVERS := gray2001_tensile_cures
 BENCH_DRIVERS += bench_gray_scenes
 
 # ---- Hoover, Hoover & Merritt 2004 (src/spam_*, src/rk4.hpp, src/molecular_dynamics.*,

@@ -43,12 +43,18 @@ def plot_table(results, figures, target, table):
     ps.save(fig, figures, target, df)
 
 
-def frames_figure(frames, times, title, vlim=None):
-    """Particle configurations at the frame times closest to `times`, coloured by sigma_xx."""
+def frames_figure(frames, times, title, vlim=None, ncols=1, panel_width=9.0):
+    """Particle configurations at the frame times closest to `times`, coloured by sigma_xx (the grey scale
+    of Gray et al. Fig 2: lighter in tension), `ncols` panels per row; Fixed/Driven particles in black."""
     avail = np.sort(frames.t.unique())
     picks = [avail[np.argmin(np.abs(avail - t))] for t in times]
-    fig, axes = plt.subplots(len(picks), 1, figsize=(9, 1.6 * len(picks) + 0.6), sharex=True)
-    axes = np.atleast_1d(axes)
+    picks = list(dict.fromkeys(picks))  # a time asked twice is drawn once
+    nrows = -(-len(picks) // ncols)
+    aspect = (np.ptp(frames.y) + 1e-9) / (np.ptp(frames.x) + 1e-9)
+    height = max(1.0, panel_width * aspect) + 0.4 if ncols > 1 else 1.6
+    fig, axes = plt.subplots(nrows, ncols, figsize=(panel_width * ncols, height * nrows + 0.6), sharex=True, sharey=ncols > 1,
+                             squeeze=False)
+    axes = axes.ravel()
     v = vlim if vlim is not None else np.nanpercentile(np.abs(frames.sxx), 99)
     for ax, t in zip(axes, picks):
         f = frames[frames.t == t]
@@ -57,6 +63,8 @@ def frames_figure(frames, times, title, vlim=None):
         ax.scatter(fx.x, fx.y, c="k", s=1, linewidths=0)
         ax.set_aspect("equal")
         ax.set_title(f"t = {t:.0f}", fontsize=8)
-    fig.colorbar(sc, ax=axes, label=r"$\sigma_{xx}$ (tension > 0)", shrink=0.8)
+    for ax in axes[len(picks):]:
+        ax.set_visible(False)
+    fig.colorbar(sc, ax=axes[:len(picks)].tolist(), label=r"$\sigma_{xx}$ (tension > 0)", shrink=0.8)
     fig.suptitle(title)
     return fig

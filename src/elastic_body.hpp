@@ -17,6 +17,8 @@ using Tensor2 = Eigen::Matrix2d;
 enum class Motion : unsigned char {
   Free = 0,
   Fixed = 1,   ///< does not move (clamp layers of Gray et al. 2001 Section 7.1)
+  Driven = 2,  ///< moves at its prescribed constant acceleration `drive`, whatever the forces
+               ///< (the end bands of the slab of Gray et al. 2001 Section 7.3): x = x0 + v0 t + drive t^2/2
 };
 
 struct ElasticBody {
@@ -24,15 +26,18 @@ struct ElasticBody {
   std::vector<double> m, rho;
   std::vector<Tensor2> S;        ///< deviatoric stress
   std::vector<Motion> motion;
+  std::vector<Vec2> drive;       ///< prescribed acceleration of a Driven particle (zero for the others)
 
   std::size_t size() const { return x.size(); }
-  void add(const Vec2& pos, const Vec2& vel, double mass, double density, Motion kind = Motion::Free) {
+  void add(const Vec2& pos, const Vec2& vel, double mass, double density, Motion kind = Motion::Free,
+           const Vec2& acceleration = Vec2::Zero()) {
     x.push_back(pos);
     v.push_back(vel);
     m.push_back(mass);
     rho.push_back(density);
     S.push_back(Tensor2::Zero());
     motion.push_back(kind);
+    drive.push_back(kind == Motion::Driven ? acceleration : Vec2::Zero());
   }
 };
 

@@ -20,7 +20,7 @@ struct GrayTerms {
 std::string GrayOptions::describe() const {
   std::ostringstream s;
   s << (artificial_stress ? "artstress" : "noartstress") << (xsph ? "+xsph" : "") << (viscosity ? "+visc" : "")
-    << (summation_density ? "+sumdensity" : "+continuity");
+    << (summation_density ? "+sumdensity" : "+continuity") << (plasticity ? "+vonmises" : "");
   return s.str();
 }
 
@@ -63,6 +63,10 @@ GraySolver::GraySolver(ElasticBody& body, const GrayParameters& params, const Gr
   if (o_.artificial_stress && (p_.n_artificial < 0 || !(W_dp_ > 0)))
     throw std::invalid_argument("GraySolver: artificial stress needs n >= 0 and W(dp) > 0 (h/dp > 0.5)");
   if (body_.size() == 0) throw std::invalid_argument("GraySolver: empty body");
+  if (o_.plasticity && !(p_.yield_stress > 0))
+    throw std::invalid_argument("GraySolver: plasticity needs a yield stress > 0");
+  if (body_.drive.size() != body_.size() || body_.motion.size() != body_.size())
+    throw std::invalid_argument("GraySolver: body arrays of different lengths (add particles with ElasticBody::add)");
   evaluate_ = select_terms(o_, [](auto terms) { return &GraySolver::evaluate<decltype(terms)>; });
   const std::size_t n = body_.size();
   for (Rates* r : {&r0_, &r1_}) {
@@ -152,7 +156,8 @@ void GraySolver::evaluate(Rates& out) {
       if constexpr (!Terms::summation) drho += m[b] * vab.dot(gW);
       grad_v.noalias() -= (m[b] / rho[b]) * vab * gW.transpose();
     }
-    out.dv[a] = body_.motion[a] == Motion::Free ? acc : Vec2::Zero();
+    const Motion kind = body_.motion[a];
+    out.dv[a] = kind == Motion::Free ? acc : kind == Motion::Driven ? body_.drive[a] : Vec2::Zero();
     out.drho[a] = Terms::summation ? 0.0 : drho;
     out.dS[a] = hooke_deviatoric_rate(p_.mu, grad_v, S[a]);
     if constexpr (!Terms::xsph) out.vhat[a] = v[a];
@@ -183,10 +188,14 @@ void GraySolver::step(double dt) {
     if (body_.motion[a] == Motion::Free) {
       x[a] += dt * r0_.vhat[a] + half_dt2 * r0_.dv[a];
       v[a] += dt * r0_.dv[a];
+    } else if (body_.motion[a] == Motion::Driven) {  // exact for a constant acceleration; the corrector
+      x[a] += dt * v[a] + half_dt2 * r0_.dv[a];       // adds dt/2 (drive - drive) = 0 to v
+      v[a] += dt * r0_.dv[a];
     }
     rho[a] += dt * r0_.drho[a];
     S[a] += dt * r0_.dS[a];
   }
+  if (o_.plasticity) return_to_yield_surface();
   check_state();  // before the cell list sees the predicted positions
   rebuild_pairs();
   (this->*evaluate_)(r1_);  // F, D at the predicted state
@@ -197,9 +206,17 @@ void GraySolver::step(double dt) {
     if (!o_.summation_density) rho[a] += half_dt * (r1_.drho[a] - r0_.drho[a]);
     S[a] += half_dt * (r1_.dS[a] - r0_.dS[a]);
   }
+  if (o_.plasticity) return_to_yield_surface();
   time_ += dt;
   ++steps_;
   check_state();
+}
+
+void GraySolver::return_to_yield_surface() {
+  auto& S = body_.S;
+  const double Y = p_.yield_stress;
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < S.size(); ++a) S[a] = von_mises_return(S[a], Y);
 }
 
 void GraySolver::check_state() const {

@@ -3,7 +3,11 @@
 //   XSPH velocity (3.6) used for positions, density and velocity gradients,
 //   continuity (3.8) or summation density, EOS (2.7), Hooke deviatoric stress rate (2.3)-(2.5) with the
 //   velocity gradient (3.10), Monaghan's artificial viscosity, and the predictor-corrector leapfrog
-//   (6.14)-(6.18) with two force evaluations per step.
+//   (6.14)-(6.18) with two force evaluations per step. Optional perfectly plastic von Mises yield
+//   (Section 7.3): a radial return of S after each stress update, a separate pass that only runs if enabled.
+// Particle kinds (elastic_body.hpp): Free particles move with the forces (and the XSPH velocity), Fixed ones
+//   stay, Driven ones follow their prescribed acceleration exactly; all interact through the same SPH sums,
+//   so contact between bodies (the colliding rings) is nothing but those sums.
 //
 // A scene declares the terms it uses in GrayOptions. GraySolver maps them once, at construction, to a
 // compile-time instance of the pair loop (GrayTerms<...>) so that a term that is off is not in the loop
@@ -27,6 +31,7 @@ struct GrayOptions {
   bool xsph = true;                ///< move with and differentiate the XSPH velocity (3.6)
   bool viscosity = true;           ///< Monaghan's Pi_ab
   bool summation_density = false;  ///< rho_a = sum_b m_b W_ab instead of the continuity equation (3.8)
+  bool plasticity = false;         ///< perfectly plastic von Mises radial return after every stress update
   std::string describe() const;
 };
 
@@ -39,6 +44,7 @@ struct GrayParameters {
   int n_artificial = 4;            ///< exponent n of f^n (3.12)
   double eps_xsph = 0.5;           ///< epsilon-tilde of (3.6)
   double alpha = 1.0, beta = 1.0;  ///< artificial viscosity constants (not given in the paper)
+  double yield_stress = 0.03;      ///< von Mises (uniaxial) yield strength in rho0 c0^2 (Sec 7.3), if plasticity
   Box2 box;                        ///< domain for the cell list (periodic directions allowed)
   double skin_over_h = 0.2;        ///< Verlet skin of the pair list, in units of h (0: rebuild every step)
   double skin() const { return skin_over_h * h; }
@@ -89,6 +95,7 @@ class GraySolver {
   void evaluate(Rates& out);
   void rebuild_pairs();
   void check_state() const;
+  void return_to_yield_surface();
 
   ElasticBody& body_;
   GrayParameters p_;

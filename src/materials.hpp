@@ -8,6 +8,7 @@
 //   4. Compressible neo-Hookean strain energy (3.62), P(F) (3.64), Cauchy stress T = J^-1 P F^T (3.33)
 //   5. Weakly compressible solid (Gray, Monaghan & Swift 2001): equation of state (2.7), Hooke's
 //      deviatoric stress rate with the rotation terms (2.3)-(2.5), Poisson's ratio (2.8)
+//   6. Perfect plasticity: von Mises yield with radial return of the deviatoric stress (Gray 2001 Sec 7.3)
 //
 // Tensors are Eigen fixed-size D x D matrices, D = 2 or 3. In 2D every law is the PLANE-STRAIN law:
 // F33 = 1, eps33 = 0 (Ismail 2009 Section 5.1.1 assumes plane strain for its 2D curves and code); the
@@ -170,5 +171,34 @@ inline double gray_poisson_ratio_as_printed(double K, double mu) { return (3 * K
 inline double poisson_ratio_from_bulk_shear(double K, double mu) { return (3 * K - 2 * mu) / (2 * (3 * K + mu)); }
 /// Young's modulus of an isotropic 3D solid with bulk modulus K and shear modulus mu: 9 K mu / (3K + mu).
 inline double young_from_bulk_shear(double K, double mu) { return 9 * K * mu / (3 * K + mu); }
+
+// =====================================================================================================
+// 6. Perfectly plastic von Mises yield, radial return (Gray, Monaghan & Swift 2001 Section 7.3: "the Von
+//    Mises criterion with a yield strength of 0.03"; the paper gives no formula)
+// =====================================================================================================
+// Convention (CHOSEN, the usual one of SPH solid codes, e.g. Libersky & Petschek 1991):
+//  - the invariant is J2 = 1/2 S:S of the full 3D deviator. A 2D plane-strain state carries S_xx, S_xy,
+//    S_yy; its out-of-plane component is S_zz = -(S_xx + S_yy), which is exactly what the 1/3 of the rate
+//    (2.3) integrates to (section 5: the in-plane trace of dS/dt is 2 mu tr(eps_dot) / 3 = -dS_zz/dt);
+//  - the yield strength Y is the UNIAXIAL yield stress ("yield strength" of a metal), so the surface is
+//    sqrt(3 J2) = Y (a pure shear yields at S_xy = Y / sqrt(3)).
+// Radial return: a trial S outside the surface is scaled back onto it, S <- S Y / sqrt(3 J2); inside, S is
+// unchanged. Scaling keeps the direction of S and S_zz = -(S_xx + S_yy), and commutes with rotations.
+
+/// J2 = 1/2 (S_xx^2 + S_yy^2 + S_zz^2 + 2 S_xy^2) with S_zz = -(S_xx + S_yy) (plane strain).
+inline double plane_strain_J2(const Tensor2& S) {
+  const double sxx = S(0, 0), syy = S(1, 1), szz = -(sxx + syy), sxy = 0.5 * (S(0, 1) + S(1, 0));
+  return 0.5 * (sxx * sxx + syy * syy + szz * szz) + sxy * sxy;
+}
+
+/// von Mises equivalent stress sqrt(3 J2): equals |sigma| in uniaxial stress.
+inline double von_mises_stress(const Tensor2& S) { return std::sqrt(3.0 * plane_strain_J2(S)); }
+
+/// Perfectly plastic radial return onto the von Mises surface sqrt(3 J2) = yield (yield > 0).
+inline Tensor2 von_mises_return(const Tensor2& S, double yield) {
+  const double J2_3 = 3.0 * plane_strain_J2(S);
+  if (J2_3 <= yield * yield) return S;
+  return S * (yield / std::sqrt(J2_3));
+}
 
 }  // namespace sph

@@ -1,6 +1,7 @@
 // Material laws (src/materials.hpp): neo-Hookean stress against its strain energy, objectivity, symmetry,
 // the stress-free reference state, the small-strain limit against Hooke's law, plane strain against 3D,
-// and the elastic constants and wave speeds against the numbers Ismail 2009 states.
+// the elastic constants and wave speeds against the numbers Ismail 2009 states, and the von Mises radial
+// return (on the surface after return, unchanged inside, objective, idempotent).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -220,6 +221,76 @@ TEST(WaveSpeeds, IsmailTable414) {
   EXPECT_LT(sph::bar_wave_speed(200e9, 8000), sph::longitudinal_wave_speed(steel, 8000));
   EXPECT_THROW(sph::bar_wave_speed(200e9, 0.0), std::invalid_argument);
   EXPECT_THROW(sph::longitudinal_wave_speed(steel, -1.0), std::invalid_argument);
+}
+
+// ----- von Mises radial return (section 6 of materials.hpp) -------------------------------------------
+
+sph::Tensor2 random_deviator(std::mt19937& rng, double scale) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  sph::Tensor2 S;
+  const double sxy = u(rng);
+  S << u(rng), sxy, sxy, u(rng);  // S_xx + S_yy need not vanish: S_zz = -(S_xx + S_yy)
+  return S;
+}
+
+TEST(VonMises, InvariantMatchesTheThreeDimensionalDeviator) {
+  std::mt19937 rng(21);
+  for (int trial = 0; trial < 50; ++trial) {
+    const sph::Tensor2 S = random_deviator(rng, 0.1);
+    Eigen::Matrix3d S3 = Eigen::Matrix3d::Zero();
+    S3.topLeftCorner<2, 2>() = S;
+    S3(2, 2) = -S.trace();
+    EXPECT_NEAR(sph::plane_strain_J2(S), 0.5 * (S3.array() * S3.array()).sum(), 1e-15);
+  }
+  // Uniaxial stress sigma_xx = s: deviator (2s/3, -s/3, -s/3), equivalent stress |s|.
+  sph::Tensor2 uni;
+  uni << 2.0 / 3.0 * 0.05, 0, 0, -0.05 / 3.0;
+  EXPECT_NEAR(sph::von_mises_stress(uni), 0.05, 1e-15);
+  // Pure shear S_xy = k yields at k = Y / sqrt(3).
+  sph::Tensor2 shear;
+  shear << 0, 1, 1, 0;
+  EXPECT_NEAR(sph::von_mises_stress(shear), std::sqrt(3.0), 1e-15);
+}
+
+TEST(VonMises, ReturnLandsOnTheSurfaceAlongTheTrialDirection) {
+  std::mt19937 rng(22);
+  const double Y = 0.03;
+  int outside = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const sph::Tensor2 S = random_deviator(rng, 0.1);
+    if (sph::von_mises_stress(S) <= Y) continue;
+    ++outside;
+    const sph::Tensor2 R = sph::von_mises_return(S, Y);
+    EXPECT_NEAR(sph::von_mises_stress(R), Y, 1e-15);
+    const double k = R(0, 0) / S(0, 0);  // radial: R = k S with 0 < k < 1
+    EXPECT_GT(k, 0.0);
+    EXPECT_LT(k, 1.0);
+    EXPECT_LT((R - k * S).norm(), 1e-15);
+  }
+  EXPECT_GT(outside, 100);
+}
+
+TEST(VonMises, InsideTheSurfaceNothingChanges) {
+  std::mt19937 rng(23);
+  const double Y = 0.03;
+  for (int trial = 0; trial < 200; ++trial) {
+    const sph::Tensor2 S = random_deviator(rng, 0.008);  // sqrt(3 J2) <= sqrt(12) x 0.008 < Y
+    ASSERT_LE(sph::von_mises_stress(S), Y);
+    EXPECT_EQ(sph::von_mises_return(S, Y), S);  // bit for bit
+  }
+}
+
+TEST(VonMises, ReturnIsObjectiveAndIdempotent) {
+  std::mt19937 rng(24);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI);
+  const double Y = 0.03;
+  for (int trial = 0; trial < 100; ++trial) {
+    const sph::Tensor2 S = random_deviator(rng, 0.1);
+    const sph::Tensor2 Q = Eigen::Rotation2Dd(angle(rng)).toRotationMatrix();
+    const sph::Tensor2 R = sph::von_mises_return(S, Y);
+    EXPECT_LT((sph::von_mises_return(Q * S * Q.transpose(), Y) - Q * R * Q.transpose()).norm(), 1e-15);
+    EXPECT_LT((sph::von_mises_return(R, Y) - R).norm(), 1e-16);
+  }
 }
 
 }  // namespace
