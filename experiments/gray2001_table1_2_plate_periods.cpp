@@ -16,6 +16,7 @@
 //     period; --crossings 2 measures T between the first two crossings), at most --periods theory periods
 // Theory (7.1): E = 9 K mu / (3K + mu), nu = (3K - 2 mu) / (2 (3K + mu)), K = rho0 c0^2, plane strain
 //   1 - nu^2 -- the convention that reproduces the published theory column (reference/G-tab1.csv).
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -67,6 +68,8 @@ int main(int argc, char** argv) {
   d.param("table", table, "1 or 2 for one table only, 0 for both");
   d.param("paper-dp", paper_dp, "the spacing of the paper's runs, used only by the theory reading H - dp");
   d.param("max-steps", max_steps, "stop each run after this many steps (smoke test); -1 = no limit");
+  std::vector<std::string> only;
+  d.param("rows", only, "run only these rows, e.g. H2_Vf0.05_mu0.6 (default: every row of the table)");
 
   return d.run(argc, argv, [&] {
     if (table < 0 || table > 2) throw std::invalid_argument("--table must be 0, 1 or 2");
@@ -97,6 +100,7 @@ int main(int argc, char** argv) {
     int count[3] = {0, 0, 0};
     for (const Row& row : kRows) {
       if (table != 0 && row.table != table) continue;
+      if (!only.empty() && std::find(only.begin(), only.end(), key(row)) == only.end()) continue;
       // --quick: one row per table (mu = 0.6, Vf = 0.01, the shortest periods) at a coarser spacing.
       if (d.quick() && !(row.mu == 0.6 && row.Vf == 0.01)) continue;
       const double E = sph::young_from_bulk_shear(K, row.mu), nu = sph::poisson_ratio_from_bulk_shear(K, row.mu);

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """G-fig8 (Figs 8-10): the 3 x 1 slab pulled by its end bands (black) with von Mises plasticity. Fig 8: eps = 0,
 the unphysical fracture; Fig 9: eps = 0.3 up to t = 394; Fig 10: eps = 0.3 necking to fracture; all coloured by
-sigma_xx. Main figure: the neck width (in particle spacings) against time and strain for every run, the
+sigma_xx. Main figure: the neck width (cm) against time and strain for every run, the
 resolution study included, with the fracture times (the ends parted) marked."""
 import glob
 import os
@@ -44,14 +44,15 @@ for i, (name, label, dp) in enumerate(runs):
     t = t[t.parted == 0]
     color = f"C{i}"
     lab = f"{label}, dp = {dp:g}"
-    axes[0].plot(t.t, t.neck_width / dp, color=color, label=lab)
+    axes[0].plot(t.t, t.neck_width, color=color, label=lab)
     axes[1].plot(t.strain, t.neck_width / t.median_width, color=color, label=lab)
     axes[2].plot(t.t, t.strain, color=color, label=lab)
     row = summary[(summary.dp == dp) & ((summary.eps > 0) == (label != "eps = 0"))]
     if len(row) and row.fracture_time.iloc[0] > 0:
         axes[0].axvline(row.fracture_time.iloc[0], color=color, ls=":", lw=0.8)
 axes[0].set_xlabel("t")
-axes[0].set_ylabel("neck width / dp (until the ends part, dotted)")
+axes[0].plot([542], [0.16], "k*", ms=9, label="paper: fracture at t = 542, neck ~10 x 0.016")
+axes[0].set_ylabel("neck width (cm; until the ends part, dotted)")
 axes[0].legend(fontsize=7)
 axes[1].set_xlabel("strain of the ends' separation")
 axes[1].set_ylabel("neck width / median width")
@@ -63,5 +64,6 @@ accel = float(meta.get("param.end-accel", "nan"))
 if np.isfinite(accel):
     length = np.round(3.0 / summary.dp.iloc[0]) * summary.dp.iloc[0]
     axes[2].plot(tt, accel * tt**2 / length, "k:", lw=0.8, label="rigid bands: a t$^2$ / length")
+axes[2].plot([394], [0.13], "k*", ms=9, label="paper: strain ~0.13 at t = 394 (Fig 10)")
 axes[2].legend(fontsize=7)
 ps.save(fig, args.figures, "G-fig8", summary)
