@@ -4,6 +4,7 @@
 
 #include "fragments.hpp"
 #include "progress.hpp"
+#include "scenes/sampled_run.hpp"
 
 namespace scenes {
 
@@ -11,17 +12,8 @@ PlateRunResult run_plate(const PlateRunSpec& s,
                          const std::function<void(const sph::GraySolver&, const sph::ElasticBody&)>& on_sample,
                          const std::string& progress_label) {
   Plate plate = make_plate(s.plate);
-  sph::GrayParameters p;
-  p.rho0 = s.plate.rho0;
+  sph::GrayParameters p = gray_parameters(s, s.plate.rho0, s.plate.dp, plate.box);
   p.c0 = s.plate.c0;
-  p.mu = s.mu;
-  p.dp = s.plate.dp;
-  p.h = s.h_over_dp * s.plate.dp;
-  p.eps_artificial = s.eps_artificial;
-  p.n_artificial = s.n_artificial;
-  p.alpha = s.alpha;
-  p.beta = s.beta;
-  p.box = plate.box;
   sph::GraySolver solver(plate.body, p, s.options);
   const double vmax = s.plate.Vf * s.plate.c0;
   PlateRunResult r;

@@ -17,16 +17,7 @@ RingsRunResult run_rings(const RingsRunSpec& s,
     throw std::invalid_argument("rings run: need t_max, sample_dt, fracture_link > 0 and min_fragment >= 1");
   Rings rings = make_rings(s.rings);
   sph::ElasticBody& body = rings.body;
-  sph::GrayParameters p;
-  p.rho0 = s.rings.rho0;
-  p.mu = s.mu;
-  p.dp = s.rings.dp;
-  p.h = s.h_over_dp * s.rings.dp;
-  p.eps_artificial = s.eps_artificial;
-  p.n_artificial = s.n_artificial;
-  p.alpha = s.alpha;
-  p.beta = s.beta;
-  p.box = rings.box;
+  const sph::GrayParameters p = gray_parameters(s, s.rings.rho0, s.rings.dp, rings.box);
   sph::GraySolver solver(body, p, s.options);
   RingsRunResult r;
   r.dt = sph::gray_time_step(p, s.cfl, s.rings.speed);

@@ -1,6 +1,7 @@
-// The time loop the ring and slab runs share: step to t_max, measure every sample_dt (and at t = 0), stop
-// early when the measurement says so, and turn a blow-up into a message instead of an exception, so that
-// a run that blows up still returns its trace (the stability sweeps record where it stopped).
+// What the plate, ring and slab runs share: the solver parameters from a run spec, and the time loop that
+// steps to t_max, measures every sample_dt (and at t = 0), stops early when the measurement says so, and
+// turns a blow-up into a message instead of an exception, so that a run that blows up still returns its
+// trace (the stability sweeps record where it stopped).
 #pragma once
 
 #include <algorithm>
@@ -10,6 +11,23 @@
 #include "progress.hpp"
 
 namespace scenes {
+
+/// The scheme's parameters from a run spec's fields (mu, h_over_dp, eps_artificial, n_artificial, alpha,
+/// beta) for a scene of spacing dp and reference density rho0 in the cell-list box `box`.
+template <class RunSpec>
+sph::GrayParameters gray_parameters(const RunSpec& s, double rho0, double dp, const sph::Box2& box) {
+  sph::GrayParameters p;
+  p.rho0 = rho0;
+  p.mu = s.mu;
+  p.dp = dp;
+  p.h = s.h_over_dp * dp;
+  p.eps_artificial = s.eps_artificial;
+  p.n_artificial = s.n_artificial;
+  p.alpha = s.alpha;
+  p.beta = s.beta;
+  p.box = box;
+  return p;
+}
 
 /// Steps `solver` at `dt` until `t_max`; calls `sample()` at t = 0 and every `sample_dt`, and stops after a
 /// sample for which `stop()` is true. Returns the blow-up message ("" if the run went through).

@@ -135,17 +135,8 @@ SlabRunResult run_slab(const SlabRunSpec& s, const SlabObserver& on_sample, cons
     throw std::invalid_argument("slab run: the ends would travel " + std::to_string(reach) + " by t_max: raise the margin");
   Slab slab = make_slab(s.slab);
   sph::ElasticBody& body = slab.body;
-  sph::GrayParameters p;
-  p.rho0 = s.slab.rho0;
-  p.mu = s.mu;
-  p.dp = s.slab.dp;
-  p.h = s.h_over_dp * s.slab.dp;
-  p.eps_artificial = s.eps_artificial;
-  p.n_artificial = s.n_artificial;
-  p.alpha = s.alpha;
-  p.beta = s.beta;
+  sph::GrayParameters p = gray_parameters(s, s.slab.rho0, s.slab.dp, slab.box);
   p.yield_stress = s.yield_stress;
-  p.box = slab.box;
   sph::GrayOptions o = s.options;
   o.plasticity = s.plasticity;
   sph::GraySolver solver(body, p, o);
