@@ -131,6 +131,7 @@ int main(int argc, char** argv) {
       const double dt = 0.3 * body.h() / cL;
       const int centre = body.nearest({Lb / 2, Hb / 2});
       const int n = static_cast<int>(std::ceil(T_load / dt)), every = std::max(1, n / 1500);
+      sph::SnapshotSeries snaps(d.out_dir() / ("snapshots_block_" + path + ".h5"), d.info());
       double s2 = 0, lost = 0;
       int ns = 0;
       sph::Tensor2 Fend = sph::Tensor2::Identity();
@@ -146,6 +147,7 @@ int main(int argc, char** argv) {
         const double Ta = sph::neo_hookean_cauchy<2>(m, Fa)(0, 0);
         if (t > 0.5 * T_load) { s2 += (T11 - Ta) * (T11 - Ta); ++ns; }
         if (s % every == 0) bcsv.row(path, t, l1(t), l2(t), F(0, 0), F(1, 1), T11, Ta);
+        if (s % std::max(1, n / 12) == 0 || s == n - 1) snaps.write(scenes::tl_snapshot(body));
         Fend = F;
         Tend = T11;
         Taend = Ta;

@@ -112,6 +112,21 @@ Body2D::Body2D(BodyConfig2D cfg) : cfg_(std::move(cfg)) {
     }
   }
   Pm_.resize(ng_, 4);
+  if (cfg_.hourglass < 0) throw std::invalid_argument("Body2D: hourglass >= 0");
+  if (cfg_.hourglass > 0) {
+    std::vector<Eigen::Triplet<double, int>> tr;
+    const double dV = cfg_.ps * cfg_.ps;
+    for (int i = 0; i < nr_; ++i)
+      for (SparseMatrix::InnerIterator it(m_.W, i); it; ++it) {
+        const int j = static_cast<int>(it.col());
+        if (j == i) continue;
+        const double r2 = (all_[j] - all_[i]).squaredNorm();
+        if (r2 > 0 && it.value() > 0) tr.emplace_back(i, j, kern_.W(std::sqrt(r2)) * dV / r2);
+      }
+    K_.resize(nr_, n);
+    K_.setFromTriplets(tr.begin(), tr.end());
+    K_.makeCompressed();
+  }
   build_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -296,11 +311,40 @@ void Body2D::step(double dt) {
       for (const auto& [i, cond, dA] : cfg_.real_on_traction)
         if (!cfg_.conditions[cond].dirichlet[c]) a_[c][i] += cfg_.conditions[cond].value[c](all_[i], t_) * dA / dV;
     }
+    if (cfg_.hourglass > 0) add_hourglass(c, a_[c]);
     a_[c] /= cfg_.rho;
     if (cfg_.damping > 0) a_[c].head(nr_) -= cfg_.damping / dt * (u_[c].head(nr_) - up_[c].head(nr_));
     central_difference_step(u_[c], up_[c], a_[c], dt, 0, nr_);
   }
   t_ += dt;
+  dt_last_ = dt;
+  ++steps_;
+}
+
+Vec2 Body2D::velocity(int i) const {
+  if (!(dt_last_ > 0)) return Vec2::Zero();
+  return Vec2(u_[0][i] - up_[0][i], u_[1][i] - up_[1][i]) / dt_last_;
+}
+
+void Body2D::add_hourglass(int c, Eigen::VectorXd& a) const {
+  // Row c of G: g_[2c] = du_c/dX, g_[2c + 1] = du_c/dY.
+  const Eigen::VectorXd &gx = g_[2 * c], &gy = g_[2 * c + 1], &u = u_[c];
+  const double k = cfg_.hourglass * young_modulus(cfg_.lame);
+  const int* outer = K_.outerIndexPtr();
+  const int* inner = K_.innerIndexPtr();
+  const double* val = K_.valuePtr();
+#pragma omp parallel for schedule(static) if (nr_ > 20000)
+  for (int i = 0; i < nr_; ++i) {
+    double s = 0;
+    for (int e = outer[i]; e < outer[i + 1]; ++e) {
+      const int j = inner[e];
+      const bool ghost = j >= nr_;  // a ghost's own gradient is truncated by the edge of the ghost layer
+      const double Gx = 0.5 * (gx[i] + (ghost ? gx[i] : gx[j])), Gy = 0.5 * (gy[i] + (ghost ? gy[i] : gy[j]));
+      const Vec2 d = all_[j] - all_[i];
+      s += val[e] * (u[j] - u[i] - Gx * d.x() - Gy * d.y());
+    }
+    a[i] += k * s;
+  }
 }
 
 Tensor2 Body2D::smoothed_cauchy(int i) const {

@@ -63,13 +63,29 @@ struct BodyConfig2D {
   /// Real particles that carry Dirichlet components: (index into real, condition index).
   std::vector<std::pair<int, int>> real_on_dirichlet;
   double damping = 0.0;                   ///< optional mass-proportional damping a -= damping v (1/s)
+  /// Zero-energy-mode ("hourglass") control, dimensionless gamma (0 = off, the thesis's scheme). The plain
+  /// SPH gradient does not see a particle-scale sawtooth (sum_q (-1)^q grad W = 0 on a lattice), so nothing
+  /// resists it and boundary closures can feed it. The control adds, on real particle i,
+  ///   a_i += gamma (E / rho) sum_j K_ij [ (u_j - u_i) - (G_i + G_j)/2 (X_j - X_i) ],  K_ij = W_ij dV / |X_ij|^2,
+  /// G = F - I the SPH displacement gradient (G_j := G_i for a ghost j, whose own gradient is truncated):
+  /// the misfit of each pair against the field the two gradients predict (after Ganzenmueller 2015,
+  /// linearised). It is zero for any linear field (between real particles also quadratic), pairwise
+  /// antisymmetric between real particles (momentum kept), and stiffens exactly the modes the gradient
+  /// cannot see. Kept away from ghosts (real pairs only) it does not hold the edge mode of the hole
+  /// sheet down: the ghost pairs are what tie the boundary layer's sawtooth to the closure. It does not cure
+  /// everything: at 201 per side a slower mode at the corner of the hole sheet's loaded edge still grows (see
+  /// experiments/ismail2009_fig5_13to5_15_hole_resolution.cpp).
+  double hourglass = 0.0;
   /// Real particles on a piece with a traction component: (index into real, condition, boundary length).
   std::vector<std::tuple<int, int, double>> real_on_traction;
   /// Energy-consistent ("variational") boundary: traction components of the ghosts extend u linearly,
   /// u_g = 2 u(X_b) - u(X_m) (a linear map E of the real values), stresses are zero at the ghosts, the ghost
   /// rows of Div P are returned to the real particles by E^T and tractions enter as boundary forces
   /// tbar dA. Then the semi-discrete force is minus the gradient of sum psi(F) dV: no mode can gain energy
-  /// from the boundary (the reflection scheme above grows at free edges, e-folding in ~60 steps at dt = 0.3 h/c_L). It is less accurate near boundaries (the boundary forces and the ghost rows land on the first layers of particles): I-2d uses the reflection scheme (short runs), I-hole this one (long runs).
+  /// from the boundary (the reflection scheme above feeds a particle-scale sawtooth at free edges that grows
+  /// over thousands of steps; see `hourglass`). It is less accurate near boundaries (the boundary forces and
+  /// the ghost rows land on the first layers of particles: the sheet with a hole's stress comes out 30% low
+  /// at 201 per side), so every scene uses the reflection scheme; this one is kept for that comparison.
   bool variational = false;
 };
 
@@ -84,9 +100,13 @@ class Body2D {
   void step(double dt);
 
   double time() const { return t_; }
+  long steps() const { return steps_; }
   int n_real() const { return nr_; }
   const Vec2& X(int i) const { return cfg_.real[i]; }
   Vec2 u(int i) const { return {u_[0][i], u_[1][i]}; }
+  /// (u_n - u_{n-1}) / dt of the last step (zero before the first).
+  Vec2 velocity(int i) const;
+  double rho0() const { return cfg_.rho; }
   /// F and P at real particle i, from the last step (time t - dt).
   Tensor2 F(int i) const;
   Tensor2 P(int i) const;
@@ -120,9 +140,12 @@ class Body2D {
   Eigen::VectorXd u_[2], up_[2], g_[4], P_[4], a_[2], tmp_, tb_, tm_;
   Eigen::Matrix<double, Eigen::Dynamic, 4> Pb_, Pm_;
   Eigen::Matrix<double, Eigen::Dynamic, 2> Um_, Ub_;  // u interpolated at X_m and X_b, per ghost
+  SparseMatrix K_;                                 // hourglass pair weights, real rows x all columns
+  void add_hourglass(int c, Eigen::VectorXd& a) const;
   SparseMatrix Et_[2];                            // variational: E^T (real x ghost) per component
   Eigen::VectorXd ag_;  // P interpolated at X_b and X_m, per ghost
-  double t_ = 0.0, build_s_ = 0.0;
+  double t_ = 0.0, build_s_ = 0.0, dt_last_ = 0.0;
+  long steps_ = 0;
 };
 
 }  // namespace sph

@@ -2,9 +2,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "materials.hpp"
+#include "progress.hpp"
 #include "scenes/ismail_plate.hpp"
 
 namespace scenes {
@@ -52,6 +54,8 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   cfg.lame = m;
   cfg.variational = p.variational;
   cfg.damping = 2.0 * omega;
+  cfg.hourglass = p.hourglass;
+  cfg.law = p.hooke ? sph::BodyConfig2D::Law::Hooke : sph::BodyConfig2D::Law::NeoHookean;
   sph::Body2D body(std::move(cfg));
   HoleResult r;
   r.particles = body.n_real();
@@ -60,44 +64,59 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   const int n = static_cast<int>(std::ceil(t_end / dt));
   std::size_t next_snap = 0;
   const int top = body.nearest({0.0, p.R});
-  double vmax_run = 0;
+  double top_before = std::numeric_limits<double>::quiet_NaN();  // smoothed (0, R) stress 1/omega before the end
+  double vmin_after_ramp = std::numeric_limits<double>::infinity();
   const auto t0 = std::chrono::steady_clock::now();
+  sph::Progress progress("hole sheet " + std::to_string(p.n) + " x " + std::to_string(p.n), t_end);
   for (int s = 0; s < n; ++s) {
     body.step(dt);
+    progress.update(body.time(), s + 1);
     ++r.steps;
     if (s % 20 == 0 || s == n - 1) {
       if (!body.finite()) { r.finite = false; break; }
       double pk = 0;
       for (int i = 0; i < body.n_real(); ++i) pk = std::max(pk, max_principal(body.cauchy(i)));
       r.peak_sigma1_dynamic = std::max(r.peak_sigma1_dynamic, pk);
+      double vmax = 0;
+      for (int i = 0; i < body.n_real(); ++i)
+        if (body.velocity(i).norm() > vmax) { vmax = body.velocity(i).norm(); r.fastest_X = body.X(i); }
+      r.history.push_back({body.time(), max_principal(body.smoothed_cauchy(top)), pk, vmax});
+      if (body.time() > t_ramp) vmin_after_ramp = std::min(vmin_after_ramp, vmax);
     }
+    if (std::isnan(top_before) && body.time() >= t_end - 1.0 / omega) top_before = max_principal(body.smoothed_cauchy(top));
     while (snapshot && next_snap < snapshot_fractions.size() && body.time() >= snapshot_fractions[next_snap] * t_end) {
       snapshot(body, body.time());
       ++next_snap;
     }
   }
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  (void)vmax_run;
   if (r.finite) {
     for (int i = 0; i < body.n_real(); ++i) r.peak_sigma1 = std::max(r.peak_sigma1, max_principal(body.cauchy(i)));
     r.sigma1_hole_top = max_principal(body.cauchy(top));
     for (int i = 0; i < body.n_real(); ++i)
       r.smoothed_peak_sigma1 = std::max(r.smoothed_peak_sigma1, max_principal(body.smoothed_cauchy(i)));
     r.smoothed_sigma1_hole_top = max_principal(body.smoothed_cauchy(top));
-    // Disorder: distance of each particle's displacement from the mean of its lattice neighbours (+-ps).
+    r.settle_change = std::abs(r.smoothed_sigma1_hole_top - top_before) / r.smoothed_sigma1_hole_top;
+    if (!r.history.empty() && vmin_after_ramp > 0 && std::isfinite(vmin_after_ramp))
+      r.speed_rise = r.history.back().vmax / vmin_after_ramp;
+    // Disorder: distance of each particle's displacement from the mean of its 4 lattice neighbours (+-ps),
+    // over the particles that have all four (found through their lattice indices: the sheet's particles sit
+    // at (i ps, j ps), i, j in [0, n)).
     const double ps = p.a / (p.n - 1);
+    std::vector<int> at(static_cast<std::size_t>(p.n) * p.n, -1);
+    auto index = [&](const Vec2& X) { return static_cast<long>(std::lround(X.y() / ps)) * p.n + std::lround(X.x() / ps); };
+    for (int i = 0; i < body.n_real(); ++i) at[index(body.X(i))] = i;
     double num = 0, den = 0;
     for (int i = 0; i < body.n_real(); ++i) {
+      const long ix = std::lround(body.X(i).x() / ps), iy = std::lround(body.X(i).y() / ps);
+      if (ix == 0 || iy == 0 || ix == p.n - 1 || iy == p.n - 1) continue;
       Vec2 mean = Vec2::Zero();
-      int k = 0;
-      for (const Vec2& off : {Vec2(ps, 0), Vec2(-ps, 0), Vec2(0, ps), Vec2(0, -ps)}) {
-        const Vec2 Xq = body.X(i) + off;
-        if (!(Xq.x() > -1e-9 && Xq.y() > -1e-9 && Xq.x() < p.a + 1e-9 && Xq.y() < p.a + 1e-9 && Xq.norm() > p.R - 1e-9)) continue;
-        const int q = body.nearest(Xq);
-        mean += body.u(q);
-        ++k;
+      bool all4 = true;
+      for (const long q : {iy * p.n + ix + 1, iy * p.n + ix - 1, (iy + 1) * p.n + ix, (iy - 1) * p.n + ix}) {
+        if (at[q] < 0) { all4 = false; break; }
+        mean += body.u(at[q]);
       }
-      if (k == 4) { num += (body.u(i) - mean / 4).squaredNorm(); den += body.u(i).squaredNorm(); }
+      if (all4) { num += (body.u(i) - mean / 4).squaredNorm(); den += body.u(i).squaredNorm(); }
     }
     r.zigzag = std::sqrt(num / std::max(den, 1e-300));
     if (snapshot) snapshot(body, body.time());

@@ -20,7 +20,9 @@ struct HoleParams {
   double dt_factor = 0.3;     ///< dt / (h / c_L)
   double ramp_transits = 2;   ///< load ramp time in shear transits a / c_T (CHOSEN)
   double settle = 12;         ///< run on for settle / omega after the ramp (CHOSEN)
-  bool variational = true;    ///< boundary scheme (see total_lagrangian_2d.hpp)
+  bool variational = false;   ///< boundary scheme (see total_lagrangian_2d.hpp): ghost reflection by default
+  double hourglass = 0.0;     ///< zero-energy-mode control gamma (BodyConfig2D::hourglass)
+  bool hooke = false;         ///< linear (Hooke, small strain) instead of neo-Hookean: the linear reference
 };
 
 struct HoleResult {
@@ -31,9 +33,16 @@ struct HoleResult {
   double peak_sigma1_dynamic = 0;  ///< max over the run
   double smoothed_peak_sigma1 = 0; ///< final max principal of the SPH-smoothed stress over all particles
   double smoothed_sigma1_hole_top = 0;  ///< smoothed, at the particle nearest (0, R)
+  double settle_change = 0;        ///< |smoothed (0, R) stress at the end - its value 1/omega earlier| / end value
   double zigzag = 0;               ///< RMS of u minus its SPH-smoothed value over RMS u: particle-scale disorder
-  double kinetic_final_rel = 0;    ///< settling: max |v| at the end over max |v| during the run
+  /// Settling: largest particle speed at the end over its smallest value after the ramp (1 = still falling
+  /// or flat at the end; > 1 = a mode growing at rest), and where that fastest particle sits (reference X).
+  double speed_rise = 0;
+  sph::Vec2 fastest_X = sph::Vec2::Zero();
   bool finite = true;
+  /// Every 20 steps: time, SPH-smoothed stress at (0, R), max particle stress, max particle speed.
+  struct Sample { double t, smoothed_top, peak, vmax; };
+  std::vector<Sample> history;
 };
 
 /// Runs the sheet; calls snapshot(body, t) at the given times (and at the end).

@@ -169,4 +169,20 @@ sph::BodyConfig2D make_body(const Domain2D& dom, std::vector<sph::BoundaryCondit
   return cfg;
 }
 
+sph::Snapshot tl_snapshot(const sph::Body2D& body) {
+  sph::Snapshot s;
+  s.time = body.time();
+  s.step = body.steps();
+  for (int i = 0; i < body.n_real(); ++i) {
+    const sph::Tensor2 T = body.cauchy(i);
+    s.position.push_back(body.X(i) + body.u(i));
+    s.velocity.push_back(body.velocity(i));
+    s.density.push_back(body.rho0() / body.F(i).determinant());
+    s.sxx.push_back(T(0, 0));
+    s.syy.push_back(T(1, 1));
+    s.sxy.push_back(T(0, 1));
+  }
+  return s;
+}
+
 }  // namespace scenes

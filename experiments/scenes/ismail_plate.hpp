@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "hdf5_snapshot.hpp"
 #include "total_lagrangian_2d.hpp"
 
 namespace scenes {
@@ -39,5 +40,9 @@ Domain2D quarter_hole_domain(double a, double R, int left, int bottom, int right
 /// of a body on `dom`; material and kernel fields of the returned config are left for the caller.
 sph::BodyConfig2D make_body(const Domain2D& dom, std::vector<sph::BoundaryCondition2D> conditions, double ps,
                             double h_over_ps);
+
+/// The body's real particles as an HDF5 snapshot: current positions X + u, velocities, current density
+/// rho_0 / J and the Cauchy stress.
+sph::Snapshot tl_snapshot(const sph::Body2D& body);
 
 }  // namespace scenes
