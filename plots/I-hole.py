@@ -59,7 +59,8 @@ ax.legend(fontsize=6, loc="lower right")
 hist_path = os.path.join(args.results, "history.csv")
 if os.path.exists(hist_path):
     h = read(args.results, "history.csv")
-    for ax, series, title in ((axes[2, 0], "plain", "plain scheme"), (axes[2, 1], "controlled", "with the control")):
+    for ax, series, title in ((axes[2, 0], "plain", "plain scheme\n(a level speed: a drift nothing resists)"),
+                              (axes[2, 1], "controlled", "with the control\n(a rising speed would be the edge instability)")):
         for n, hn in h[(h["series"] == series) & (h["max_speed"] > 0)].groupby("n"):
             ax.semilogy(hn["t"] * 1e3, hn["max_speed"], lw=0.8, label=f"n = {n}")
         hl = h[(h["series"] == "linear") & (h["max_speed"] > 0)]
@@ -67,7 +68,7 @@ if os.path.exists(hist_path):
             ax.semilogy(hl["t"] * 1e3, 100 * hl["max_speed"], "k--", lw=0.8, label=f"linear, 1% load (x100), n = {hl['n'].iloc[0]}")
         ax.set_xlabel("t (ms)")
         ax.set_ylabel("largest particle speed (m/s)")
-        ax.set_title(f"coming to rest, {title}\n(a stalled or rising speed: the edge mode)")
+        ax.set_title(f"coming to rest, {title}")
         ax.legend(fontsize=6)
 if res is not None:
     ax = axes[2, 2]

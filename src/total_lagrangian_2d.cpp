@@ -319,6 +319,14 @@ void Body2D::step(double dt) {
   t_ += dt;
   dt_last_ = dt;
   ++steps_;
+  // The integrator also moved the Dirichlet components of the boundary particles; the next step pins them
+  // again before it uses them, so pin them here already: u() and velocity() between steps then report the
+  // prescribed motion, not a dt^2 a of the reaction force (which made pinned particles look like they move).
+  for (int c = 0; c < 2; ++c) {
+    if (!dir_[c]) continue;
+    const auto& b = dir_[c]->boundary();
+    for (std::size_t s = 0; s < b.size(); ++s) u_[c][b[s]] = cfg_.conditions[dir_cond_[c][s]].value[c](all_[b[s]], t_);
+  }
 }
 
 Vec2 Body2D::velocity(int i) const {

@@ -73,8 +73,8 @@ struct BodyConfig2D {
   /// antisymmetric between real particles (momentum kept), and stiffens exactly the modes the gradient
   /// cannot see. Kept away from ghosts (real pairs only) it does not hold the edge mode of the hole
   /// sheet down: the ghost pairs are what tie the boundary layer's sawtooth to the closure. It does not cure
-  /// everything: at 201 per side a slower mode at the corner of the hole sheet's loaded edge still grows (see
-  /// experiments/ismail2009_fig5_13to5_15_hole_resolution.cpp).
+  /// the closure's weak instability at loaded edges and their corners (see
+  /// experiments/ismail2009_fig5_13to5_15_hole_resolution.cpp: damping holds it down there).
   double hourglass = 0.0;
   /// Real particles on a piece with a traction component: (index into real, condition, boundary length).
   std::vector<std::tuple<int, int, double>> real_on_traction;
@@ -104,7 +104,7 @@ class Body2D {
   int n_real() const { return nr_; }
   const Vec2& X(int i) const { return cfg_.real[i]; }
   Vec2 u(int i) const { return {u_[0][i], u_[1][i]}; }
-  /// (u_n - u_{n-1}) / dt of the last step (zero before the first).
+  /// (u_n - u_{n-1}) / dt of the last step (zero before the first); Dirichlet components as prescribed.
   Vec2 velocity(int i) const;
   double rho0() const { return cfg_.rho; }
   /// F and P at real particle i, from the last step (time t - dt).

@@ -28,8 +28,8 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   const double cL = sph::longitudinal_wave_speed(m, p.rho), cT = sph::transverse_wave_speed(m, p.rho);
   const double t_ramp = p.ramp_transits * p.a / cT;
   // The slowest mode of the quarter sheet is shear-dominated (nu = 0.49): omega ~ pi c_T / (4 a). Mass-
-  // proportional damping 2 omega brings it to rest in a few periods (CHOSEN; the thesis's sheet 'comes to
-  // rest' without saying how).
+  // proportional damping (HoleParams::damping, 4 omega) brings it to rest in a few periods and holds down the
+  // reflection closure's weak edge instability (CHOSEN; the thesis's sheet 'comes to rest' without saying how).
   const double omega = M_PI * cT / (4.0 * p.a), t_end = t_ramp + p.settle / omega;
   auto zero = [](const Vec2&, double) { return 0.0; };
   auto load = [=](const Vec2&, double t) {
@@ -53,7 +53,7 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   cfg.rho = p.rho;
   cfg.lame = m;
   cfg.variational = p.variational;
-  cfg.damping = 2.0 * omega;
+  cfg.damping = p.damping * omega;
   cfg.hourglass = p.hourglass;
   cfg.law = p.hooke ? sph::BodyConfig2D::Law::Hooke : sph::BodyConfig2D::Law::NeoHookean;
   sph::Body2D body(std::move(cfg));
@@ -99,6 +99,9 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
     r.settle_change = std::abs(r.smoothed_sigma1_hole_top - top_before) / r.smoothed_sigma1_hole_top;
     if (!r.history.empty() && vmin_after_ramp > 0 && std::isfinite(vmin_after_ramp))
       r.speed_rise = r.history.back().vmax / vmin_after_ramp;
+    double vpeak = 0;
+    for (const auto& h : r.history) vpeak = std::max(vpeak, h.vmax);
+    if (vpeak > 0) r.rest_speed_ratio = r.history.back().vmax / vpeak;
     // Disorder: distance of each particle's displacement from the mean of its 4 lattice neighbours (+-ps),
     // over the particles that have all four (found through their lattice indices: the sheet's particles sit
     // at (i ps, j ps), i, j in [0, n)).

@@ -20,6 +20,10 @@ struct HoleParams {
   double dt_factor = 0.3;     ///< dt / (h / c_L)
   double ramp_transits = 2;   ///< load ramp time in shear transits a / c_T (CHOSEN)
   double settle = 12;         ///< run on for settle / omega after the ramp (CHOSEN)
+  /// Mass-proportional damping in units of omega (CHOSEN: 4). At 2 (critical for the slowest mode) a weak
+  /// instability of the ghost-reflection closure at the loaded and free edges, growing at a rate between omega
+  /// and 2 omega, outruns it at fine resolution (201 per side; the linear law from 81); at 4 no run rises.
+  double damping = 4;
   bool variational = false;   ///< boundary scheme (see total_lagrangian_2d.hpp): ghost reflection by default
   double hourglass = 0.0;     ///< zero-energy-mode control gamma (BodyConfig2D::hourglass)
   bool hooke = false;         ///< linear (Hooke, small strain) instead of neo-Hookean: the linear reference
@@ -38,6 +42,8 @@ struct HoleResult {
   /// Settling: largest particle speed at the end over its smallest value after the ramp (1 = still falling
   /// or flat at the end; > 1 = a mode growing at rest), and where that fastest particle sits (reference X).
   double speed_rise = 0;
+  /// At rest: largest particle speed at the end over its largest value during the run.
+  double rest_speed_ratio = 0;
   sph::Vec2 fastest_X = sph::Vec2::Zero();
   bool finite = true;
   /// Every 20 steps: time, SPH-smoothed stress at (0, R), max particle stress, max particle speed.
