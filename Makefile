@@ -1,6 +1,7 @@
 # One command reproduces every figure and table, another runs the tests:
 #   make figures   deps -> build -> every driver -> plots -> check against published numbers
 #   make test      deps -> build -> GoogleTest (ctest) -> quick smoke run of every driver -> quick check
+#                  -> the report on the quick results
 # Other targets: make check, make paper, make bench, make deps, make clean.
 # Make's dependency graph reruns a driver only when its binary changed. Threads: `figures` runs the drivers
 # one at a time, each with OpenMP on all cores (RUN_JOBS=1); `quick` runs two at a time single-threaded, since
@@ -29,7 +30,7 @@ FIGS    = $(foreach t,$(TARGETS),$(FIGURES)/$(t).png)
 .DEFAULT_GOAL := help
 
 help:
-	@sed -n '1,6p' Makefile | sed 's/^# \{0,1\}//'
+	@sed -n '1,5p' Makefile | sed 's/^# \{0,1\}//'
 
 # ---------------------------------------------------------------------------------------------------
 # Set-up: Debian packages (apt) and the Python that can import matplotlib and pandas.
@@ -84,6 +85,8 @@ ctest: build
 quick:
 	OMP_NUM_THREADS=1 $(MAKE) --no-print-directory -j $(NCORES) RESULTS=results/quick FIGURES=results/quick/figures DRIVER_FLAGS=--quick plots
 	$(MAKE) --no-print-directory RESULTS=results/quick CHECK_FLAGS=--quick check
+	$(PY) paper/build_report.py --results results/quick --figures results/quick/figures --reference reference \
+	  --out results/quick/report/index.html
 
 test: deps build ctest quick
 
