@@ -14,7 +14,7 @@
 // 21 x 21 the disorder measure is 0.27), so the stress is also reported SPH-smoothed (Section 2.9's secondary
 // approximation), which is the value compared with the reference. No zero-energy-mode control here (the
 // thesis's scheme; --hourglass adds it). Writes fields.csv and the same snapshots as snapshots.h5 (+ .xdmf).
-// The resolution study up to 201 x 201 is ismail2009_fig5_13to5_15_hole_resolution (its own driver: ~13 min on one core).
+// The resolution study up to 201 x 201 is ismail2009_fig5_13to5_15_hole_resolution (its own driver: ~13 min on two cores).
 #include <cmath>
 #include <string>
 #include <vector>

@@ -31,7 +31,7 @@
 // fem.csv: the same square quarter sheet by Q4 plane-stress finite elements (scenes/fem_hole.hpp), meshes
 // m = 32 ... 256: the linear reference (Heywood's long-strip formula is 11% below this geometry's value).
 // history.csv: the smoothed hole stress, the largest particle stress and speed against time for every run.
-// About 16 minutes on one core, 11 on two. --quick: 11 and 21 per side.
+// About 17 minutes on one core, 13 on two. --quick: 11 and 21 per side.
 #include <cmath>
 #include <string>
 #include <vector>
