@@ -205,7 +205,7 @@ Vec2 Body2D::traction_normal_column(const Tensor2& Fb, const Vec2& n, const Boun
   return a;
 }
 
-void Body2D::set_ghost_displacements(double t) {
+void Body2D::pin_dirichlet(double t) {
   // Boundary particles of a Dirichlet component hold the prescribed value.
   for (int c = 0; c < 2; ++c) {
     if (!dir_[c]) continue;
@@ -215,6 +215,10 @@ void Body2D::set_ghost_displacements(double t) {
       u_[c][b[s]] = dir_target_[c][s];
     }
   }
+}
+
+void Body2D::set_ghost_displacements(double t) {
+  pin_dirichlet(t);
   if (ng_ > 0) {
     // Ghost values: Dirichlet components odd about the prescribed value, 2 ubar(X_b) - u(X_m); traction
     // components by the Taylor extension u(X_m) + (F_b - I)(X_g - X_m), where the normal column of F_b solves
@@ -322,11 +326,7 @@ void Body2D::step(double dt) {
   // The integrator also moved the Dirichlet components of the boundary particles; the next step pins them
   // again before it uses them, so pin them here already: u() and velocity() between steps then report the
   // prescribed motion, not a dt^2 a of the reaction force (which made pinned particles look like they move).
-  for (int c = 0; c < 2; ++c) {
-    if (!dir_[c]) continue;
-    const auto& b = dir_[c]->boundary();
-    for (std::size_t s = 0; s < b.size(); ++s) u_[c][b[s]] = cfg_.conditions[dir_cond_[c][s]].value[c](all_[b[s]], t_);
-  }
+  pin_dirichlet(t_);
 }
 
 Vec2 Body2D::velocity(int i) const {

@@ -123,6 +123,7 @@ class Body2D {
 
  private:
   Tensor2 law(const Tensor2& F) const;
+  void pin_dirichlet(double t);  // Dirichlet components of the boundary particles at their values at t
   void set_ghost_displacements(double t);
   void set_ghost_stresses(double t);
   Vec2 traction_normal_column(const Tensor2& Fb, const Vec2& n, const BoundaryCondition2D& bc, const Vec2& Xb,

@@ -2,8 +2,8 @@
 
 #include <Eigen/LU>
 #include <Eigen/Sparse>
-#include <array>
 #include <Eigen/SparseCholesky>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <vector>

@@ -78,8 +78,10 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
       for (int i = 0; i < body.n_real(); ++i) pk = std::max(pk, max_principal(body.cauchy(i)));
       r.peak_sigma1_dynamic = std::max(r.peak_sigma1_dynamic, pk);
       double vmax = 0;
-      for (int i = 0; i < body.n_real(); ++i)
-        if (body.velocity(i).norm() > vmax) { vmax = body.velocity(i).norm(); r.fastest_X = body.X(i); }
+      for (int i = 0; i < body.n_real(); ++i) {
+        const double v = body.velocity(i).norm();
+        if (v > vmax) { vmax = v; r.fastest_X = body.X(i); }
+      }
       r.history.push_back({body.time(), max_principal(body.smoothed_cauchy(top)), pk, vmax});
       if (body.time() > t_ramp) vmin_after_ramp = std::min(vmin_after_ramp, vmax);
     }
