@@ -1,7 +1,7 @@
 // Fracture detection by connected components.
 #include <gtest/gtest.h>
 
-#include "fragments.hpp"
+#include "core/fragments.hpp"
 
 namespace {
 

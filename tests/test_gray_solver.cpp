@@ -5,9 +5,9 @@
 #include <Eigen/Eigenvalues>
 #include <random>
 
-#include "artificial_stress.hpp"
-#include "gray_solver.hpp"
-#include "materials.hpp"
+#include "updated_lagrangian/artificial_stress.hpp"
+#include "updated_lagrangian/gray_solver.hpp"
+#include "core/materials.hpp"
 
 namespace {
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "interpolation_1d.hpp"
-#include "kernels.hpp"
+#include "total_lagrangian/interpolation_1d.hpp"
+#include "core/kernels.hpp"
 
 namespace {
 

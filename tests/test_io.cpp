@@ -14,9 +14,9 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "csv.hpp"
-#include "hdf5_snapshot.hpp"
-#include "run_info.hpp"
+#include "io/csv.hpp"
+#include "io/hdf5_snapshot.hpp"
+#include "io/run_info.hpp"
 
 namespace {
 

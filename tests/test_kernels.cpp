@@ -2,7 +2,7 @@
 // closed-form constants against quadrature.
 #include <gtest/gtest.h>
 
-#include "kernels.hpp"
+#include "core/kernels.hpp"
 
 namespace {
 

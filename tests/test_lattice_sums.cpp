@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "lattice_sums.hpp"
+#include "updated_lagrangian/lattice_sums.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <set>
 #include <utility>
 
-#include "lattices.hpp"
+#include "core/lattices.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "materials.hpp"
+#include "core/materials.hpp"
 
 namespace {
 

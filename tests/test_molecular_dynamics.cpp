@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "lattices.hpp"
-#include "molecular_dynamics.hpp"
-#include "spam_diagnostics.hpp"
+#include "core/lattices.hpp"
+#include "spam/molecular_dynamics.hpp"
+#include "core/diagnostics.hpp"
 
 namespace {
 

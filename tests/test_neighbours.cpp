@@ -8,8 +8,8 @@
 #include <limits>
 #include <random>
 
-#include "lattices.hpp"
-#include "neighbours.hpp"
+#include "core/lattices.hpp"
+#include "core/neighbours.hpp"
 
 namespace {
 

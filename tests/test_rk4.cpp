@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "rk4.hpp"
+#include "core/rk4.hpp"
 
 namespace {
 

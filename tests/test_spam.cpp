@@ -9,8 +9,8 @@
 #include <cmath>
 #include <random>
 
-#include "lattices.hpp"
-#include "spam_simulation.hpp"
+#include "core/lattices.hpp"
+#include "spam/spam_solver.hpp"
 
 namespace {
 

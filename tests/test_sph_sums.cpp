@@ -28,9 +28,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "kernels.hpp"
-#include "lattices.hpp"
-#include "neighbours.hpp"
+#include "core/kernels.hpp"
+#include "core/lattices.hpp"
+#include "core/neighbours.hpp"
 
 namespace {
 

@@ -5,14 +5,14 @@
 #include <cmath>
 #include <vector>
 
-#include "boundary_correction.hpp"
-#include "central_difference.hpp"
-#include "interpolation_1d.hpp"
-#include "kernels.hpp"
-#include "lattices.hpp"
-#include "materials.hpp"
-#include "sph_matrices.hpp"
-#include "total_lagrangian_1d.hpp"
+#include "total_lagrangian/boundary_correction.hpp"
+#include "core/central_difference.hpp"
+#include "total_lagrangian/interpolation_1d.hpp"
+#include "core/kernels.hpp"
+#include "core/lattices.hpp"
+#include "core/materials.hpp"
+#include "total_lagrangian/sph_matrices.hpp"
+#include "total_lagrangian/solver_1d.hpp"
 
 namespace {
 

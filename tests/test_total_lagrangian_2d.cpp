@@ -7,10 +7,10 @@
 #include <functional>
 #include <vector>
 
-#include "materials.hpp"
-#include "scenes/fem_hole.hpp"
-#include "scenes/ismail_plate.hpp"
-#include "total_lagrangian_2d.hpp"
+#include "core/materials.hpp"
+#include "ismail2009/scenes/fem_hole.hpp"
+#include "ismail2009/scenes/domain_2d.hpp"
+#include "total_lagrangian/solver_2d.hpp"
 
 namespace {
 

@@ -4,8 +4,8 @@
 
 #include <random>
 
-#include "kernels.hpp"
-#include "neighbours.hpp"
+#include "core/kernels.hpp"
+#include "core/neighbours.hpp"
 
 namespace {
 

@@ -1,0 +1,82 @@
+// Gray, Monaghan & Swift 2001, Fig. 4 (Section 7.1): the tip y(t) of the plate (H = 2, L = 20,
+// mu = 0.22, V_f = 0.01, eps = 0.3) for n = 10, 20, 30 particle spacings across H: "the period and amplitude
+// of the oscillations are converging", "the amplitude decreases by approximately 6% per oscillation
+// because of dissipation". The paper gives no viscosity constants: this driver also runs the coarsest n
+// with a list of alpha (beta = alpha) values to show how the decay depends on that choice.
+// Each run also records its wall time, so the same table is the work-precision data (see
+// plots/G-fig4.py); G-wp fits the convergence order.
+//
+// Parameters: as gray2001_table1_2_plate_periods, but each run stops at the tip's second zero crossing: one
+// period, two half-cycle extremes (the decay per period is 1 - (second / first)^2).
+#include <cmath>
+#include <sstream>
+
+#include "frame/driver.hpp"
+#include "core/materials.hpp"
+#include "gray2001/scenes/plate_run.hpp"
+
+int main(int argc, char** argv) {
+  sph::Driver d("gray2001_fig4_plate_resolution", "G-fig4", "Gray et al. 2001 Fig 4: plate tip y(t) against resolution");
+  std::vector<int> ns{10, 20, 30};
+  std::vector<double> alphas{0.5, 2.0};
+  double clamp = 2.0, cfl = 0.25, mu = 0.22, Vf = 0.01, periods = 1.0, alpha = 1.0;
+  d.param("n", ns, "particles across H = 2");
+  d.param("alpha", alpha, "artificial viscosity alpha (= beta) of the resolution runs");
+  d.param("alphas-coarse", alphas, "further alpha (= beta) values run at the coarsest n");
+  d.param("clamp-length", clamp, "plate length held between the fixed layers");
+  d.param("cfl", cfl, "time-step factor");
+  d.param("mu", mu, "shear modulus (Fig 4: 0.22)");
+  d.param("Vf", Vf, "tip speed / c0 (Fig 4: 0.01)");
+  d.param("periods", periods, "half the longest run, in theoretical periods (runs stop at the second crossing)");
+
+  return d.run(argc, argv, [&] {
+    if (d.quick() && !d.given("n")) ns = {4, 6, 8};
+    if (d.quick() && !d.given("alphas-coarse")) alphas = {2.0};
+    if (ns.size() < 2) throw std::invalid_argument("need at least two resolutions");
+    const double K = 1.0;
+    const double T_theory = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), 2.0, 20.0, 1.0);
+    auto table = d.csv("runs.csv", {"n", "alpha", "particles", "dt", "steps", "wall_s", "T_sph", "amp_first", "amp_second",
+                                    "decay_per_period", "T_over_theory"});
+    struct Run { int n; double alpha; };
+    std::vector<Run> runs;
+    for (int n : ns) runs.push_back({n, alpha});
+    for (double a : alphas) runs.push_back({ns.front(), a});
+    std::vector<double> T_of_n;
+    for (const Run& run : runs) {
+      scenes::PlateRunSpec s;
+      s.plate.H = 2.0;
+      s.plate.dp = 2.0 / run.n;
+      s.plate.clamp_length = clamp;
+      s.plate.Vf = Vf;
+      s.mu = mu;
+      s.cfl = cfl;
+      s.alpha = s.beta = run.alpha;
+      s.t_end = 2.0 * periods * T_theory;  // an upper bound: the run stops at the second crossing
+      s.stop_after_crossings = 2;
+      s.sample_dt = 0.5;
+      s.fracture_check_dt = 100.0;
+      std::ostringstream tag;
+      tag << "n" << run.n << "_alpha" << run.alpha;
+      const auto r = scenes::run_plate(s, {}, "plate " + tag.str());
+      if (!r.blow_up.empty()) throw std::runtime_error(tag.str() + ": " + r.blow_up);
+      const double T = scenes::period_from_crossings(scenes::zero_crossings(r.trace));
+      const auto ext = scenes::half_cycle_extremes(r.trace);
+      const double a1 = ext.size() > 0 ? std::abs(ext[0]) : NAN, a2 = ext.size() > 1 ? std::abs(ext[1]) : NAN;
+      const double decay = 1.0 - (a2 / a1) * (a2 / a1);  // two half cycles make a period
+      table.row(run.n, run.alpha, r.particles, r.dt, r.steps, r.wall_s, T, a1, a2, decay, T / T_theory);
+      auto trace = d.csv("tip_" + tag.str() + ".csv", {"t", "y_tip", "kinetic", "elastic"});
+      for (const auto& smp : r.trace) trace.row(smp.t, smp.y, smp.ke, smp.ee);
+      d.value("T_" + tag.str(), T, "period from the zero crossings");
+      d.value("amplitude_" + tag.str(), a1, "first extreme of the tip displacement");
+      d.value("decay_per_period_" + tag.str(), decay, "1 - (second extreme / first)^2");
+      if (run.alpha == alpha) T_of_n.push_back(T);
+    }
+    // Convergence: successive differences of the period shrink.
+    const std::size_t m = T_of_n.size();
+    if (m >= 3) {
+      const double d1 = std::abs(T_of_n[m - 2] - T_of_n[m - 3]), d2 = std::abs(T_of_n[m - 1] - T_of_n[m - 2]);
+      d.value("period_change_ratio_finest", d2 / d1, "|T(n3) - T(n2)| / |T(n2) - T(n1)|: < 1 when converging");
+    }
+    d.value("T_finest_over_theory", T_of_n.back() / T_theory, "finest-resolution period / thin-plate theory (H)");
+  });
+}

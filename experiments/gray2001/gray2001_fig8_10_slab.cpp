@@ -1,0 +1,177 @@
+// Gray, Monaghan & Swift 2001, Figs 8-10 (Section 7.3): a 3 x 1 slab pulled by its end bands, with
+// perfectly plastic von Mises yield. eps = 0 (Fig 8): "unphysical fracture near the junction between the
+// particles with forced motion and the other particles ... evident at a time of 119". eps = 0.3 (Figs 9-10):
+// intact; necking once the strain exceeds ~0.15 (Fig 10: strain ~0.13 at t = 394); at t = 542 the neck is
+// ~10 particles thick and it fractures.
+//
+// Parameters (source):
+//   slab 3 x 1, bands 0.2 wide at each end, acceleration 5e-6 along the long axis   (Sec 7.3)
+//   mu = 0.3, von Mises yield strength 0.03 (uniaxial, sqrt(3 J2) = Y with the plane-strain S_zz:
+//     src/materials.hpp section 6)                                                   (Sec 7.3)
+//   rho0 = c0 = 1, h = 1.5 dp, eps = 0.3, n = 4, XSPH eps = 0.5                        (Secs 3, 5, 7)
+//   READING of the acceleration: "the ends move a distance 2.5e-6 t^2 ... if t equals 400 the ends will move
+//     a distance 0.4 cm, and the strain will be 0.13". Each band accelerating at 5e-6 would move each end
+//     5e-6 t^2 / 2 = 2.5e-6 t^2 = 0.4 at t = 400, but the slab would then stretch by 0.8, a strain of
+//     0.8 / 3 = 0.27, not 0.13. The numbers agree only if 2.5e-6 t^2 is the change of the ends' SEPARATION,
+//     i.e. 5e-6 is the relative acceleration of the two ends: each band accelerates at 2.5e-6 outward
+//     (--end-accel, per end), the separation grows by 0.4 at t = 400 and the strain 0.4 / 3 = 0.133
+//     (0.129 at t = 394, as the Fig 10 caption). The driver measures the strain at t = 394 from the bands'
+//     motion (strain_at_t394); --end-accel 5e-6 runs the other reading.
+//   --quick: dp = 0.064, eps = 0.3 to t = 420, no resolution study.
+//   dp = 0.032 (CHOSEN for run time: the paper's 0.016 costs 8x, ~30 min on one idle core; --dp 0.016).
+//     The resolution study (--study-dps, default 0.064, plus the main dp) gives the fracture time's
+//     dependence on dp.
+//   slab of round(3 / dp) x round(1 / dp) particles at half-spacings (3/0.016 = 187.5: 188 x 63 at the
+//     paper's dp); band = particles whose centre lies within 0.2 of an end (CHOSEN)
+//   artificial viscosity alpha = beta = 1, dt = 0.25 h / (c_L + v_end) (CHOSEN, as the plate drivers)
+// Measured (automatically, every --sample-dt): fracture = the two driven bands are in different pieces
+//   at a link distance of 1.5 dp (the G-fig2 criterion applied to the ends); first split = any piece
+//   breaks off; neck width = the narrowest x bin (2 dp wide) of the free part, as the y extent of its
+//   particles + dp; necking onset = neck width below 0.9 x the median bin width (CHOSEN threshold);
+//   clumping (the tensile instability made visible) = two free particles closer than 0.75 dp (CHOSEN:
+//   stretching only separates them; clumping pairs columns up); opening (the fracture Fig 8 shows as
+//   "evident at a time of 119" and places "near the junction") = the mean x of two neighbouring lattice
+//   columns more than 2 dp apart (CHOSEN: a column's worth of void), with its distance from the nearer band
+//   edge. With eps = 0 the instability pairs columns all along the slab and the surface rows hold the
+//   pieces together, so the ends part (fracture_time) well after the first gap opens at a junction.
+#include <cmath>
+#include <sstream>
+
+#include "frame/driver.hpp"
+#include "io/hdf5_snapshot.hpp"
+#include "gray2001/scenes/plate_run.hpp"
+#include "gray2001/scenes/slab.hpp"
+
+namespace {
+
+std::string dp_tag(double dp) {
+  std::ostringstream s;
+  s << "dp" << dp;
+  return s.str();
+}
+
+// The sample closest to time t.
+const scenes::SlabSample& at_time(const std::vector<scenes::SlabSample>& trace, double t) {
+  std::size_t best = 0;
+  for (std::size_t i = 0; i < trace.size(); ++i)
+    if (std::abs(trace[i].t - t) < std::abs(trace[best].t - t)) best = i;
+  return trace[best];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  sph::Driver d("gray2001_fig8_10_slab", "G-fig8", "Gray et al. 2001 Figs 8-10: slab under tension with von Mises plasticity");
+  double dp = 0.032, end_accel = 2.5e-6, band = 0.2, mu = 0.3, yield = 0.03, cfl = 0.25, t_max_eps0 = 300, t_max = 700;
+  double frame_every_eps0 = 20, frame_every = 50, sample_dt = 2.0;
+  std::vector<double> study_dps{0.064}, runs{0.0, 0.3};
+  d.param("dp", dp, "particle spacing (Sec 7.3: 0.016)");
+  d.param("end-accel", end_accel, "outward acceleration of EACH end band (reading: 5e-6 is the relative one)");
+  d.param("band", band, "width of the driven end bands (Sec 7.3: 0.2)");
+  d.param("mu", mu, "shear modulus (Sec 7.3: 0.3)");
+  d.param("yield", yield, "von Mises yield strength (Sec 7.3: 0.03)");
+  d.param("cfl", cfl, "time-step factor");
+  d.param("t-max-eps0", t_max_eps0, "longest eps = 0 run");
+  d.param("t-max", t_max, "longest eps = 0.3 run");
+  d.param("frame-every-eps0", frame_every_eps0, "time between frames of the eps = 0 run");
+  d.param("frame-every", frame_every, "time between frames of the eps = 0.3 run");
+  d.param("sample-dt", sample_dt, "interval of the measurements (fracture, neck)");
+  d.param("runs", runs, "which of the runs eps = 0 and eps = 0.3 to do (e.g. --runs 0.3 for a fine eps = 0.3 run only)");
+  d.param("study-dps", study_dps, "further spacings of the eps = 0.3 resolution study (0: none)");
+
+  return d.run(argc, argv, [&] {
+    if (d.quick() && !d.given("dp")) dp = 0.064;
+    if (d.quick() && !d.given("study-dps")) study_dps.clear();
+    if (d.quick() && !d.given("t-max")) t_max = 420;  // past t = 394 of Fig 10; the fracture needs a full run
+    auto spec = [&](double eps, double spacing) {
+      scenes::SlabRunSpec s;
+      s.slab.dp = spacing;
+      s.slab.band = band;
+      s.slab.end_accel = end_accel;
+      s.mu = mu;
+      s.yield_stress = yield;
+      s.cfl = cfl;
+      s.options.artificial_stress = eps > 0;
+      s.eps_artificial = eps;
+      s.t_max = eps > 0 ? t_max : t_max_eps0;
+      s.sample_dt = sample_dt;
+      return s;
+    };
+    auto summary = d.csv("summary.csv", {"eps", "dp", "particles", "steps", "wall_s", "clumping_time", "first_split_time", "fracture_time",
+                                         "crack_x", "crack_from_junction", "opening_time", "opening_from_junction", "neck_before_fracture", "neck_before_fracture_over_dp",
+                                         "onset_time", "onset_strain", "strain_at_fracture", "blow_up"});
+    auto record = [&](double eps, double spacing, const scenes::SlabRunResult& r) {
+      const double strain_f = r.fracture_time >= 0 ? at_time(r.trace, r.fracture_time).strain : NAN;
+      summary.row(eps, spacing, r.particles, r.steps, r.wall_s, r.clumping_time, r.first_split_time, r.fracture_time, r.crack_x,
+                  r.crack_from_junction, r.opening_time, r.opening_from_junction, r.neck_before_fracture, r.neck_before_fracture / spacing, r.onset_time, r.onset_strain,
+                  strain_f, r.blow_up);
+    };
+    auto write_trace = [&](const std::string& name, const scenes::SlabRunResult& r) {
+      auto trace = d.csv(name, {"t", "extension", "strain", "kinetic", "elastic", "neck_width", "neck_x", "median_width",
+                                "closest", "widest_gap", "gap_x", "pieces", "parted"});
+      for (const auto& m : r.trace)
+        trace.row(m.t, m.extension, m.strain, m.ke, m.ee, m.neck_width, m.neck_x, m.median_width, m.closest, m.widest_gap, m.gap_x, m.pieces, m.parted);
+    };
+    double fracture_main = NAN;
+    for (const double eps : runs) {
+      if (eps != 0.0 && eps != 0.3) throw std::invalid_argument("runs: the figures' runs are eps = 0 and eps = 0.3");
+      const std::string tag = eps > 0 ? "eps0.3" : "eps0";
+      const double every = eps > 0 ? frame_every : frame_every_eps0;
+      sph::SnapshotSeries snaps(d.out_dir() / ("snapshots_" + tag + ".h5"), d.info());
+      auto frames = d.csv("frames_" + tag + ".csv", scenes::frame_columns());
+      double next_frame = 0;
+      bool parted_shown = false;
+      auto on_sample = [&](const sph::GraySolver& solver, const sph::ElasticBody& body, const scenes::SlabSample& smp) {
+        const bool first_parted = smp.parted && !parted_shown;  // a frame at the fracture as well
+        if (!first_parted && solver.time() + 1e-9 < next_frame) return;
+        parted_shown = parted_shown || smp.parted;
+        if (!first_parted) next_frame += every;
+        snaps.write(scenes::snapshot_of(solver, body));
+        scenes::write_frame(frames, solver, body);
+      };
+      const auto r = scenes::run_slab(spec(eps, dp), on_sample, "slab " + tag);
+      write_trace("trace_" + tag + ".csv", r);
+      record(eps, dp, r);
+      if (eps == 0) {
+        d.value("eps0_clumping_time", r.clumping_time, "first time two free particles were closer than 0.75 dp (-1: never)");
+        d.value("eps0_fracture_time", r.fracture_time, "the two ends in different pieces (-1: never)");
+        d.value("eps0_first_split_time", r.first_split_time, "first piece broken off (-1: never)");
+        d.value("eps0_opening_time", r.opening_time, "first gap of more than 2 dp between neighbouring columns (-1: never)");
+        d.value("eps0_opening_from_junction", r.opening_from_junction, "distance of that gap from the nearer band edge");
+      } else {
+        if (!r.blow_up.empty()) throw std::runtime_error("eps = 0.3 run blew up: " + r.blow_up);
+        const auto& s394 = at_time(r.trace, 394.0);  // the time of the Fig 10 caption
+        d.value("strain_at_t394", s394.strain, "strain of the ends' separation at t = 394, measured from the bands");
+        d.value("eps0.3_pieces_at_t394", static_cast<double>(s394.pieces), "pieces at t = 394 (1 = intact)");
+        d.value("eps0.3_fracture_time", r.fracture_time, "the two ends in different pieces (-1: never)");
+        d.value("eps0.3_clumping_time", r.clumping_time, "first time two free particles were closer than 0.75 dp (-1: never)");
+        d.value("eps0.3_neck_before_fracture", r.neck_before_fracture,
+                "neck width (cm) at the last sample before the ends parted");
+        d.value("eps0.3_neck_before_fracture_particles", r.neck_before_fracture / dp, "the same in particle spacings");
+        d.value("eps0.3_onset_strain", r.onset_strain, "strain when the neck fell below 0.9 x the median width");
+        d.value("eps0.3_crack_from_centre", std::abs(r.crack_x - 0.5 * std::lround(3.0 / dp) * dp) / 3.0,
+                "|crack x - slab centre| / length at fracture");
+        fracture_main = r.fracture_time;
+      }
+    }
+    // Resolution study of the eps = 0.3 fracture time.
+    auto study = d.csv("resolution.csv", {"dp", "particles", "steps", "wall_s", "fracture_time", "neck_before_fracture_over_dp",
+                                          "onset_strain"});
+    double coarse_fracture = NAN, coarse_dp = 0;
+    for (const double sdp : study_dps) {
+      if (sdp == 0) continue;  // --study-dps 0: no study
+      if (!(sdp > 0)) throw std::invalid_argument("study-dps: spacings must be > 0 (0: no study)");
+      const auto r = scenes::run_slab(spec(0.3, sdp), {}, "slab eps0.3 " + dp_tag(sdp));
+      write_trace("trace_eps0.3_" + dp_tag(sdp) + ".csv", r);
+      record(0.3, sdp, r);
+      study.row(sdp, r.particles, r.steps, r.wall_s, r.fracture_time, r.neck_before_fracture / sdp, r.onset_strain);
+      if (std::abs(sdp - 2 * dp) < 1e-12) {
+        coarse_fracture = r.fracture_time;
+        coarse_dp = sdp;
+      }
+    }
+    if (coarse_dp > 0 && fracture_main > 0 && coarse_fracture > 0)
+      d.value("eps0.3_fracture_time_change_2dp", std::abs(fracture_main / coarse_fracture - 1),
+              "|t_f(dp) / t_f(2 dp) - 1|: the resolution uncertainty of the fracture time");
+  });
+}

@@ -1,0 +1,95 @@
+// Stability stress test of the Gray et al. 2001 scheme on the oscillating plate (target G-stab, beyond
+// the paper): (1) the time-step factor swept to the blow-up point, with and without the artificial
+// stress; (2) a long run of --long-periods periods; (3) a random perturbation of the initial lattice.
+//
+// CHOSEN parameters: H = 2, L = 20, dp = 0.25 (8 across H: the sweep needs many runs), mu = 0.6 and
+// V_f = 0.01 (the shortest period of Table 1), the other parameters as the table driver. A run "blows
+// up" when the solver stops it (non-finite state, density below 5% of rho0, or |v| > 100 c0) or when the
+// plate breaks (fracture at a link of 1.5 dp).
+#include <cmath>
+
+#include "frame/driver.hpp"
+#include "core/materials.hpp"
+#include "gray2001/scenes/plate_run.hpp"
+
+int main(int argc, char** argv) {
+  sph::Driver d("gray2001_plate_stability", "G-stab", "Stability of the plate: time-step sweep, long run, perturbed lattice");
+  double dp = 0.25, mu = 0.6, Vf = 0.01, sweep_time = 300, long_periods = 20, perturbation = 0.01, base_cfl = 0.25;
+  std::vector<double> cfls{0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0};
+  d.param("dp", dp, "particle spacing");
+  d.param("mu", mu, "shear modulus");
+  d.param("Vf", Vf, "tip speed / c0");
+  d.param("cfl-values", cfls, "time-step factors of the sweep");
+  d.param("sweep-time", sweep_time, "simulated time of each sweep run");
+  d.param("long-periods", long_periods, "length of the long run in theoretical periods");
+  d.param("perturbation", perturbation, "random initial displacement / dp of the perturbed run");
+  d.param("cfl", base_cfl, "time-step factor of the long and perturbed runs");
+
+  return d.run(argc, argv, [&] {
+    if (d.quick() && !d.given("long-periods")) long_periods = 1.5;  // three crossings: first and last period
+    if (d.quick() && !d.given("sweep-time")) sweep_time = 60;
+    const double K = 1.0;
+    const double T = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), 2.0, 20.0, 1.0);
+    auto base = [&] {
+      scenes::PlateRunSpec s;
+      s.plate.H = 2.0;
+      s.plate.dp = dp;
+      s.plate.clamp_length = 2.0;
+      s.plate.Vf = Vf;
+      s.mu = mu;
+      s.cfl = base_cfl;
+      s.sample_dt = 1.0;
+      s.fracture_check_dt = 10.0;
+      s.run_after_fracture = 0.0;
+      return s;
+    };
+    // (1) Time-step sweep.
+    auto sweep = d.csv("cfl_sweep.csv", {"eps", "cfl", "dt", "steps", "t_reached", "blew_up", "fractured", "message"});
+    for (const double eps : {0.0, 0.3}) {
+      double largest_stable = 0;
+      for (const double cfl : cfls) {
+        auto s = base();
+        s.cfl = cfl;
+        s.eps_artificial = eps;
+        s.options.artificial_stress = eps > 0;
+        s.t_end = sweep_time;
+        const auto r = scenes::run_plate(s, {}, "cfl sweep");
+        const bool blew = !r.blow_up.empty(), broke = r.fracture_time >= 0;
+        sweep.row(eps, cfl, r.dt, r.steps, r.trace.back().t, blew ? 1 : 0, broke ? 1 : 0, r.blow_up);
+        if (!blew && !broke && cfl > largest_stable) largest_stable = cfl;
+        if (blew || broke) break;  // larger factors only fail sooner
+      }
+      d.value(eps > 0 ? "largest_stable_cfl_eps0.3" : "largest_stable_cfl_eps0", largest_stable,
+              "largest time-step factor of the sweep that neither blew up nor broke");
+    }
+    // (2) The long run and (3) the perturbed lattice, against an unperturbed reference of the same length.
+    auto runs = d.csv("runs.csv", {"run", "periods", "steps", "wall_s", "T_first", "T_last", "fragments", "energy_first", "energy_last"});
+    auto one = [&](const std::string& name, double periods, double shake) {
+      auto s = base();
+      s.t_end = periods * T * 2.0;  // margin: coarse plates run up to 1.5x the thin-plate period (G-fig4)
+      s.stop_after_crossings = static_cast<int>(std::lround(2 * periods));
+      s.plate.perturbation = shake;
+      s.run_after_fracture = -1;
+      const auto r = scenes::run_plate(s, {}, name);
+      if (!r.blow_up.empty()) throw std::runtime_error(name + ": " + r.blow_up);
+      const auto c = scenes::zero_crossings(r.trace);
+      const double T_first = c.size() >= 2 ? c[1] : NAN;
+      const double T_last = c.size() >= 3 ? c[c.size() - 1] - c[c.size() - 3] : NAN;
+      const double e0 = r.trace.front().ke + r.trace.front().ee, e1 = r.trace.back().ke + r.trace.back().ee;
+      runs.row(name, periods, r.steps, r.wall_s, T_first, T_last, r.trace.back().fragments, e0, e1);
+      auto trace = d.csv("tip_" + name + ".csv", {"t", "y_tip", "kinetic", "elastic", "fragments"});
+      for (const auto& smp : r.trace) trace.row(smp.t, smp.y, smp.ke, smp.ee, smp.fragments);
+      return std::tuple<double, double, std::size_t>{T_first, T_last, r.trace.back().fragments};
+    };
+    const auto [T_ref, T_ref_last, pieces_ref] = one("reference", 1.0, 0.0);
+    (void)T_ref_last;
+    (void)pieces_ref;
+    const auto [T_pert, T_pert_last, pieces_pert] = one("perturbed", 1.0, perturbation);
+    (void)T_pert_last;
+    d.value("perturbed_period_change", std::abs(T_pert / T_ref - 1.0), "|T(perturbed) / T(lattice) - 1|");
+    d.value("perturbed_fragments", static_cast<double>(pieces_pert), "pieces after one period (1 = intact)");
+    const auto [T_first, T_last, pieces_long] = one("long", long_periods, 0.0);
+    d.value("long_run_fragments", static_cast<double>(pieces_long), "pieces after the long run (1 = intact)");
+    d.value("long_run_period_drift", std::abs(T_last / T_first - 1.0), "|last period / first period - 1|");
+  });
+}

@@ -1,0 +1,112 @@
+// Target X (beyond the paper): the cures for the tensile instability of the Gray, Monaghan & Swift 2001 scheme
+// compared on the same three scenes: no cure, the artificial stress alone (eps = 0.3, Sec 6.1), XSPH alone
+// (eps~ = 0.5, eq 3.6: the paper's "standard algorithm" of Figs 2, 6 and 8), and both (the paper's new
+// algorithm of Figs 3, 7 and 9-10), with the wall time of every run.
+//
+// Scenes and measures (CHOSEN to be cheap enough for four variants each; --*-dp for finer runs):
+//   plate  Figs 2-3: H = 2, L = 20, mu = 0.6, V_f = 0.05, dp = 0.25; one half period (T = 2 x the first
+//          zero crossing, as the table driver); period error against the thin-plate theory (7.1) with
+//          the E, nu of G-tab1 (which itself is ~10% below SPH at H = 2: compare the variants, not 0);
+//          broken = the free particles in more than one piece at link 1.5 dp (G-fig2).
+//   rings  Figs 6-7 at dp = 0.2 (paper: 0.1; G-fig6 runs that): fragments (>= 10 particles), restitution.
+//   slab   Figs 8-10 at dp = 0.064 (paper: 0.016; G-fig8 runs 0.032): the time the two driven ends part,
+//          and the clumping time (two free particles closer than 0.75 dp); reading of the acceleration as G-fig8
+//          (each end at 2.5e-6).
+// Every other parameter as the scene's own driver.
+#include <chrono>
+#include <cmath>
+
+#include "frame/driver.hpp"
+#include "core/materials.hpp"
+#include "gray2001/scenes/plate_run.hpp"
+#include "gray2001/scenes/rings_run.hpp"
+#include "gray2001/scenes/slab.hpp"
+
+namespace {
+
+struct Variant { const char* name; bool artificial_stress; bool xsph; };
+const Variant kVariants[] = {{"none", false, false}, {"artstress", true, false}, {"xsph", false, true}, {"both", true, true}};
+
+sph::GrayOptions options_of(const Variant& v) {
+  sph::GrayOptions o;
+  o.artificial_stress = v.artificial_stress;
+  o.xsph = v.xsph;
+  return o;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  sph::Driver d("gray2001_tensile_cures", "X", "Cures for the tensile instability on the plate, rings and slab");
+  double plate_dp = 0.25, rings_dp = 0.2, slab_dp = 0.064, slab_t_max = 800, cfl = 0.25;
+  d.param("plate-dp", plate_dp, "plate particle spacing (Figs 2-3 at 0.2 in G-fig2)");
+  d.param("rings-dp", rings_dp, "rings particle spacing (paper 0.1)");
+  d.param("slab-dp", slab_dp, "slab particle spacing (paper 0.016)");
+  d.param("slab-t-max", slab_t_max, "longest slab run");
+  d.param("cfl", cfl, "time-step factor of every run");
+
+  return d.run(argc, argv, [&] {
+    if (d.quick() && !d.given("plate-dp")) plate_dp = 0.5;
+    if (d.quick() && !d.given("rings-dp")) rings_dp = 0.25;
+    if (d.quick() && !d.given("slab-dp")) slab_dp = 0.1;
+    if (d.quick() && !d.given("slab-t-max")) slab_t_max = 300;
+    const double mu_plate = 0.6, K = 1.0;
+    const double T_theory = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu_plate),
+                                                        sph::poisson_ratio_from_bulk_shear(K, mu_plate), 2.0, 20.0, 1.0);
+    auto table = d.csv("cures.csv", {"variant", "artificial_stress", "xsph", "plate_period", "plate_period_error", "plate_broken",
+                                     "plate_fracture_time", "plate_wall_s", "rings_fragments", "rings_min_main_share",
+                                     "rings_restitution", "rings_wall_s", "slab_clumping_time", "slab_fracture_time",
+                                     "slab_wall_s"});
+    double slab_fracture_xsph = NAN, slab_fracture_both = NAN;
+    for (const Variant& v : kVariants) {
+      const std::string name = v.name;
+      // Plate, half a period.
+      scenes::PlateRunSpec ps;
+      ps.plate.H = 2.0;
+      ps.plate.dp = plate_dp;
+      ps.plate.clamp_length = 2.0;
+      ps.plate.Vf = 0.05;
+      ps.mu = mu_plate;
+      ps.cfl = cfl;
+      ps.options = options_of(v);
+      ps.t_end = 1.5 * T_theory;
+      ps.stop_after_crossings = 1;
+      ps.fracture_check_dt = 5.0;
+      ps.run_after_fracture = 20.0;
+      const auto pr = scenes::run_plate(ps, {}, "cures plate " + name);
+      const bool plate_broken = pr.fracture_time >= 0 || !pr.blow_up.empty();
+      const double T = plate_broken ? NAN : scenes::period_from_crossings(scenes::zero_crossings(pr.trace));
+      // Rings.
+      scenes::RingsRunSpec rs;
+      rs.rings.dp = rings_dp;
+      rs.rings.gap = std::max(0.2, 2.0 * rings_dp);  // closest particles gap + 2 dp apart: outside 2h = 3 dp
+      rs.cfl = cfl;
+      rs.options = options_of(v);
+      rs.t_max = 300;
+      rs.run_after_contact = 20;
+      const auto rr = scenes::run_rings(rs, {}, "cures rings " + name);
+      // Slab.
+      scenes::SlabRunSpec ss;
+      ss.slab.dp = slab_dp;
+      ss.cfl = cfl;
+      ss.options = options_of(v);
+      ss.t_max = slab_t_max;
+      const auto sr = scenes::run_slab(ss, {}, "cures slab " + name);
+      table.row(name, v.artificial_stress ? 1 : 0, v.xsph ? 1 : 0, T, T / T_theory - 1, plate_broken ? 1 : 0, pr.fracture_time,
+                pr.wall_s, rr.max_fragments, rr.min_main_share, rr.restitution, rr.wall_s, sr.clumping_time, sr.fracture_time,
+                sr.wall_s);
+      d.value(name + "_plate_broken", plate_broken ? 1.0 : 0.0, "the plate broke (or blew up) within half a period");
+      d.value(name + "_plate_period_error", T / T_theory - 1, "T_sph / T_thin-plate - 1 (nan: broken)");
+      d.value(name + "_rings_fragments", static_cast<double>(rr.max_fragments), "most fragments of a ring");
+      d.value(name + "_rings_restitution", rr.restitution, "relative speed after / before (-1: not separated)");
+      d.value(name + "_slab_fracture_time", sr.fracture_time, "the ends parted (-1: not by slab-t-max)");
+      d.value(name + "_slab_clumping_time", sr.clumping_time, "free particles closer than 0.75 dp (-1: never)");
+      // Not parted by slab-t-max counts as slab-t-max: a lower bound of the delay below.
+      const double tf = sr.fracture_time >= 0 ? sr.fracture_time : slab_t_max;
+      if (name == "xsph") slab_fracture_xsph = tf;
+      if (name == "both") slab_fracture_both = tf;
+    }
+    d.value("slab_fracture_delay_both_over_xsph", slab_fracture_both / slab_fracture_xsph,
+            "time the ends part with both cures / with XSPH only (the paper's new / standard algorithm)");
+  });
+}

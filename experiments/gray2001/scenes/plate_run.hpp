@@ -1,0 +1,66 @@
+// Running the oscillating plate: the solver set-up shared by the plate drivers and the tip trace
+// analysis (zero crossings, period, amplitude decay, fracture).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/csv.hpp"
+#include "updated_lagrangian/gray_solver.hpp"
+#include "io/hdf5_snapshot.hpp"
+#include "gray2001/scenes/plate.hpp"
+
+namespace scenes {
+
+struct PlateRunSpec {
+  PlateSpec plate;
+  double mu = 0.22;
+  double h_over_dp = 1.5;          ///< Gray et al. 2001 Section 7
+  double cfl = 0.25;               ///< dt = cfl h / (c_L + |v|max) (CHOSEN; see the stability sweep)
+  sph::GrayOptions options;
+  double alpha = 1.0, beta = 1.0;  ///< artificial viscosity (CHOSEN; the paper gives none)
+  double eps_artificial = 0.3;
+  int n_artificial = 4;
+  double t_end = 2000;
+  long max_steps = -1;             ///< stop after this many steps (smoke runs); -1: no limit
+  double sample_dt = 1.0;          ///< interval of the recorded tip trace
+  double fracture_link = 1.5;      ///< fracture when the free particles split at this link distance / dp
+  double fracture_check_dt = 10.0;
+  double run_after_fracture = -1;  ///< stop this long after the first fracture; < 0: never stop
+  int stop_after_crossings = -1;   ///< stop once the tip has crossed its start line this often; < 0: never
+};
+
+struct TipSample { double t, y, ke, ee; std::size_t fragments; };
+
+struct PlateRunResult {
+  std::vector<TipSample> trace;    ///< y is the tip displacement from its initial position
+  long steps = 0;
+  std::size_t particles = 0;
+  double dt = 0, wall_s = 0;
+  double fracture_time = -1;       ///< first time the free particles were in more than one piece
+  std::string blow_up;             ///< message if the run blew up
+};
+
+/// Runs the plate; `snapshot(t, solver, body)` is called every sample if given (for HDF5 output).
+PlateRunResult run_plate(const PlateRunSpec& s,
+                         const std::function<void(const sph::GraySolver&, const sph::ElasticBody&)>& on_sample = {},
+                         const std::string& progress_label = "plate");
+
+/// Columns of a configuration frame CSV (long format, one row per particle per frame).
+std::vector<std::string> frame_columns();
+/// Appends the particles of the current state to a frame CSV: t, x, y, sigma_xx, sigma_yy, sigma_xy, fixed.
+void write_frame(sph::CsvWriter& out, const sph::GraySolver& solver, const sph::ElasticBody& body);
+/// The current state as an HDF5 snapshot with the Cauchy stress.
+sph::Snapshot snapshot_of(const sph::GraySolver& solver, const sph::ElasticBody& body);
+
+/// Times at which the tip crosses its initial position (linear interpolation), after t = 0.
+std::vector<double> zero_crossings(const std::vector<TipSample>& trace);
+/// Period from the crossings, counting t = 0 as crossing 0 (the tip starts at its rest position):
+/// the mean of the full periods c[i+2] - c[i]; with a single crossing, twice it (the zero crossings of
+/// a damped linear oscillation are equally spaced); NaN without crossings.
+double period_from_crossings(const std::vector<double>& crossings);
+/// Extremes of the tip displacement between successive crossings (alternating sign).
+std::vector<double> half_cycle_extremes(const std::vector<TipSample>& trace);
+
+}  // namespace scenes

@@ -1,0 +1,99 @@
+// The slab under tension of Gray, Monaghan & Swift 2001 Section 7.3: a 3 x 1 block on a square grid whose
+// particles within `band` of each end are Driven (elastic_body.hpp) at a constant acceleration along the
+// long axis, outward, while the rest is free; and the run that measures it: extension and strain, the
+// width of the neck, the widest gap between lattice columns (where the body opens), and fracture (the two
+// driven ends no longer connected).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "updated_lagrangian/elastic_body.hpp"
+#include "updated_lagrangian/gray_solver.hpp"
+#include "core/neighbours.hpp"
+
+namespace scenes {
+
+struct SlabSpec {
+  double L = 3.0, H = 1.0;    ///< Gray 2001 Sec 7.3
+  double dp = 0.016;          ///< Gray 2001 Sec 7.3
+  double band = 0.2;          ///< driven particles: centre within `band` of an end (Sec 7.3)
+  double end_accel = 2.5e-6;  ///< acceleration of EACH end, outward (READING: see the slab driver)
+  double rho0 = 1.0;
+  double margin = 2.0;        ///< room around the slab in the cell-list box (sizing only)
+};
+
+struct Slab {
+  sph::ElasticBody body;
+  sph::Box2 box;
+  double length = 0, height = 0;  ///< of the particle block: nx dp and ny dp
+  long nx = 0, ny = 0;            ///< particle a is in lattice column a % nx (added row by row)
+  std::vector<std::size_t> left_band, right_band;
+};
+
+/// Particles at ((i + 1/2) dp, (j + 1/2) dp), i < nx = round(L / dp), j < ny = round(H / dp) (at dp = 0.016
+/// the slab is 188 x 63 particles, 3.008 x 1.008: L / dp is not an integer); the bands are Driven at
+/// -end_accel (left) and +end_accel (right) along x, everything starts at rest.
+Slab make_slab(const SlabSpec& s);
+
+struct SlabRunSpec {
+  SlabSpec slab;
+  double mu = 0.3;                 ///< Gray 2001 Sec 7.3
+  double yield_stress = 0.03;      ///< von Mises yield strength (Sec 7.3)
+  bool plasticity = true;          ///< Sec 7.3 includes plastic behaviour in every slab run
+  double h_over_dp = 1.5;
+  double cfl = 0.25;               ///< as the plate and ring drivers (CHOSEN)
+  sph::GrayOptions options;        ///< its `plasticity` is set from the field above
+  double alpha = 1.0, beta = 1.0;  ///< artificial viscosity (CHOSEN, as the plate drivers)
+  double eps_artificial = 0.3;
+  int n_artificial = 4;
+  double t_max = 700;
+  double run_after_fracture = 10;  ///< stop this long after the ends part (< 0: run to t_max)
+  double sample_dt = 2.0;          ///< interval of samples and fracture checks
+  double fracture_link = 1.5;      ///< link distance / dp of the connectivity (the criterion of G-fig2)
+  double neck_bin = 2.0;           ///< width of the x bins of the neck measurement, in dp
+  double neck_ratio_onset = 0.9;   ///< necking has begun when min width / median width falls below this
+  double clump_ratio = 0.75;       ///< the tensile instability is visible once two free particles come
+                                   ///< closer than this x dp (stretching only moves them apart; clumping
+                                   ///< pairs up lattice columns at ~0.5-0.7 dp)
+  double opening_gap = 2.0;        ///< the body has visibly opened once two neighbouring lattice columns'
+                                   ///< mean x are more than this x dp apart (a column's worth of void)
+};
+
+struct SlabSample {
+  double t, extension, strain;     ///< separation of the bands' centres of mass minus its initial value; / length
+  double ke, ee;
+  double neck_width, neck_x;       ///< narrowest bin of the free part: y extent of its particles + dp; its x
+  double median_width;             ///< median over the free part's bins (the neck ratio is neck / median)
+  double closest;                  ///< smallest distance between two free particles
+  double widest_gap, gap_x;        ///< largest distance between the mean x of neighbouring lattice columns; its midpoint
+  std::size_t pieces;              ///< pieces of the whole slab at the fracture link
+  int parted;                      ///< 1 once the two driven bands are in different pieces
+};
+
+struct SlabRunResult {
+  std::vector<SlabSample> trace;
+  long steps = 0;
+  std::size_t particles = 0;
+  double dt = 0, wall_s = 0;
+  double first_split_time = -1;    ///< first time the slab was in more than one piece
+  double fracture_time = -1;       ///< first time the two ends were in different pieces
+  double crack_x = NAN;            ///< where it parted: midway between the left end's piece and the right end's
+  double crack_from_junction = NAN;///< how far the left end's piece reaches beyond its band edge, or the right
+                                   ///< one's, whichever is less: the crack nearest a junction (t = fracture;
+                                   ///< a slab broken at both junctions leaves a middle piece, and crack_x is
+                                   ///< then its centre)
+  double neck_before_fracture = NAN;   ///< neck width at the last sample before the ends parted
+  double onset_strain = NAN, onset_time = NAN;  ///< necking onset (neck ratio below the threshold)
+  double clumping_time = -1;       ///< first time the closest free pair fell below clump_ratio dp (-1: never)
+  double opening_time = -1;        ///< first time the widest column gap exceeded opening_gap dp (-1: never)
+  double opening_from_junction = NAN;  ///< distance of that gap from the nearer band edge (t = opening_time)
+  std::string blow_up;
+};
+
+/// Runs the slab; `on_sample(solver, body, sample)` is called at every sample, after it is recorded.
+using SlabObserver = std::function<void(const sph::GraySolver&, const sph::ElasticBody&, const SlabSample&)>;
+SlabRunResult run_slab(const SlabRunSpec& s, const SlabObserver& on_sample = {}, const std::string& progress_label = "slab");
+
+}  // namespace scenes

@@ -1,0 +1,285 @@
+#include "hoover2004/scenes/hexagon.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "spam/molecular_dynamics.hpp"
+#include "core/diagnostics.hpp"
+#include "spam/spam_solver.hpp"
+
+namespace sph::scenes {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+bool finite_state(const std::vector<Vec2>& x, const std::vector<Vec2>& v) {
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!std::isfinite(x[i].x() + x[i].y() + v[i].x() + v[i].y())) return false;
+  return true;
+}
+
+// The loop shared by MD and SPAM: `advance()` makes one step, `sample(t)` appends to the series.
+template <class Advance, class Positions, class Velocities, class Internal, class Density, class OnSample>
+void run_loop(const HexagonSetup& s, HexagonRun& r, Advance&& advance, Positions&& pos, Velocities&& vel,
+              Internal&& internal, Density&& density, OnSample&& on_sample) {
+  const auto x0 = s.lattice();
+  const double omega = s.omega(), dt = s.dt;
+  const long steps = std::lround(s.revolutions * s.revolution_time() / dt);
+  std::vector<long> snap_steps;
+  for (double a : s.snapshot_angles) snap_steps.push_back(std::lround(a / omega / dt));
+  double unwrapped = 0, last = 0;
+  auto sample = [&](long n) {
+    const auto& x = pos();
+    const auto b = body_moments(x, vel(), s.params.mass);
+    const ShapeFit f = shape_fit(x0, x);
+    double da = f.angle - last;
+    da -= 2 * kPi * std::nearbyint(da / (2 * kPi));
+    unwrapped += da;
+    last = f.angle;
+    const double U = internal();
+    r.t.push_back(n * dt); r.L.push_back(b.angular_momentum); r.K.push_back(b.kinetic); r.U.push_back(U);
+    r.shape_rms.push_back(f.rms); r.angle.push_back(unwrapped);
+    r.gauss_D.push_back(b.kinetic > 0 ? 1.0 - b.angular_momentum * b.angular_momentum / (2 * b.kinetic * b.inertia) : 0.0);
+    r.gauss_beta.push_back(0.0);
+    if (n == 0) { r.L0 = b.angular_momentum; r.E0 = b.kinetic + U; }
+    on_sample();
+  };
+  const auto start = std::chrono::steady_clock::now();
+  sample(0);
+  for (std::size_t k = 0; k < snap_steps.size(); ++k)
+    if (snap_steps[k] == 0) { r.snapshot_angles.push_back(s.snapshot_angles[k]); r.snapshots.push_back(pos()); r.snapshot_density.push_back(density()); }
+  for (long n = 1; n <= steps; ++n) {
+    advance(n);
+    r.steps = n;
+    const bool ok = finite_state(pos(), vel());
+    if (!ok || n % s.sample_every == 0 || n == steps) {
+      if (!ok) { r.failed = true; r.failed_at = n * dt; break; }
+      sample(n);
+      if (r.shape_rms.back() > s.shells) { r.failed = true; r.failed_at = n * dt; break; }
+    }
+    for (std::size_t k = 0; k < snap_steps.size(); ++k)
+      if (snap_steps[k] == n) { r.snapshot_angles.push_back(s.snapshot_angles[k]); r.snapshots.push_back(pos()); r.snapshot_density.push_back(density()); }
+  }
+  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
+std::size_t HexagonRun::sample_at_angle(double a, double omega) const {
+  // The first sample at or after the angle, allowing half a sample interval of rounding.
+  const double half = t.size() > 1 ? 0.5 * (t[1] - t[0]) : 0.0;
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (t[k] >= a / omega - half) return k;
+  return t.size();
+}
+
+std::vector<Vec2> HexagonSetup::lattice() const { return hexagon(shells, 1.0); }
+
+SpamParams HexagonSetup::spam_params() const {
+  SpamParams p = params;
+  const double a = shells + 2 * p.h;
+  p.box = Box2{-a, -a, a, a, false, false};
+  return p;
+}
+
+double HexagonRun::L_ratio_at_angle(double a, double omega) const {
+  const std::size_t k = sample_at_angle(a, omega);
+  if (k < t.size()) return L[k] / L0;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+HexagonRun run_hexagon_md(const HexagonSetup& s) {
+  HexagonRun r;
+  r.variant = "md";
+  const auto x0 = s.lattice();
+  MdParams mp;
+  mp.mass = s.params.mass;
+  MolecularDynamics md(x0, mp);
+  MdState y{x0, std::vector<Vec2>(x0.size())};
+  for (std::size_t i = 0; i < x0.size(); ++i) y.v[i] = s.omega() * Vec2(-x0[i].y(), x0[i].x());
+  const std::vector<double> rho0(x0.size(), std::sqrt(4.0 / 3.0));
+  run_loop(s, r, [&](long n) { md.step(y, (n - 1) * s.dt, s.dt); }, [&]() -> const std::vector<Vec2>& { return y.x; },
+           [&]() -> const std::vector<Vec2>& { return y.v; }, [&] { return md.potential_energy(y); },
+           [&] { return rho0; }, [] {});
+  return r;
+}
+
+HexagonRun run_hexagon_spam(const HexagonSetup& s, const SpamOptions& o, const std::string& variant) {
+  HexagonRun r;
+  r.variant = variant;
+  const auto x0 = s.lattice();
+  SpamState y(x0.size());
+  for (std::size_t i = 0; i < x0.size(); ++i) {
+    y.x[i] = x0[i];
+    y.v[i] = s.omega() * Vec2(-x0[i].y(), x0[i].x());
+    y.rho[i] = std::sqrt(4.0 / 3.0);  // rho(t = 0) = sqrt(4/3) for continuity densities (Fig. 4c, 5)
+  }
+  auto sim = make_spam(o, s.spam_params(), y);
+  std::vector<double> rho;
+  const double m = s.params.mass;
+  const bool gauss = o.torque == SpamTorque::Gauss;
+  // Optional: the integral of the advection torque sum m (dr/dt - <dr/dt>) x (v - <v>), trapezoidal per step.
+  SpamState dy;
+  double adv_prev = 0, adv_int = 0;
+  auto advection_torque = [&] {
+    sim->derivative(dy);
+    const auto& v = sim->state().v;
+    Vec2 uc = Vec2::Zero(), vc = Vec2::Zero();
+    for (std::size_t i = 0; i < v.size(); ++i) { uc += dy.x[i]; vc += v[i]; }
+    uc /= static_cast<double>(v.size()); vc /= static_cast<double>(v.size());
+    double t = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const Vec2 a = dy.x[i] - uc, b = v[i] - vc;
+      t += m * (a.x() * b.y() - a.y() * b.x());
+    }
+    return t;
+  };
+  if (s.track_advection_torque) adv_prev = advection_torque();
+  run_loop(s, r, [&](long) {
+        sim->step(s.dt);
+        if (s.track_advection_torque) {
+          const double now = advection_torque();
+          adv_int += 0.5 * s.dt * (adv_prev + now);
+          adv_prev = now;
+        }
+      }, [&]() -> const std::vector<Vec2>& { return sim->state().x; },
+           [&]() -> const std::vector<Vec2>& { return sim->state().v; },
+           [&] { double u = 0; for (double e : sim->state().e) u += m * e; return u; },
+           [&] { sim->density(rho); return rho; }, [&] { r.advection_torque_integral.push_back(adv_int); });
+  if (gauss) {  // the multiplier of the last evaluation, recorded at the last sample only (diagnostic)
+    r.gauss_beta.back() = sim->work().gauss_beta;
+  }
+  r.gauss_floor_hits = sim->work().gauss_floor_hits;
+  r.reflections = sim->reflections();
+  return r;
+}
+
+std::vector<std::string> series_columns() {
+  return {"variant", "t", "angle_deg", "L", "L_over_L0", "K", "U", "E", "E_minus_E0", "shape_rms", "rotation_deg",
+          "D_over_mR2"};
+}
+std::vector<std::string> snapshot_columns() { return {"variant", "angle_deg", "i", "x", "y", "rho"}; }
+
+void write_series(CsvWriter& out, const HexagonRun& r, double omega) {
+  for (std::size_t k = 0; k < r.t.size(); ++k) {
+    const double E = r.K[k] + r.U[k];
+    out.row(r.variant, r.t[k], omega * r.t[k] * 180 / kPi, r.L[k], r.L[k] / r.L0, r.K[k], r.U[k], E, E - r.E0,
+            r.shape_rms[k], r.angle[k] * 180 / kPi, r.gauss_D[k]);
+  }
+}
+
+void write_snapshots(CsvWriter& out, const HexagonRun& r) {
+  for (std::size_t s = 0; s < r.snapshots.size(); ++s)
+    for (std::size_t i = 0; i < r.snapshots[s].size(); ++i)
+      out.row(r.variant, r.snapshot_angles[s] * 180 / kPi, static_cast<double>(i), r.snapshots[s][i].x(),
+              r.snapshots[s][i].y(), r.snapshot_density[s][i]);
+}
+
+}  // namespace sph::scenes
+
+namespace sph::scenes {
+
+SpamOptions spam_options_from_label(const std::string& label) {
+  SpamOptions o;
+  std::vector<std::string> parts;
+  std::size_t a = 0;
+  while (a <= label.size()) {
+    const std::size_t b = label.find('/', a);
+    parts.push_back(label.substr(a, b == std::string::npos ? std::string::npos : b - a));
+    if (b == std::string::npos) break;
+    a = b + 1;
+  }
+  if (parts.size() < 2) throw std::invalid_argument("variant '" + label + "': need density/advection[/...]");
+  o.density = spam_density_from_string(parts[0]);
+  o.advection = spam_advection_from_string(parts[1]);
+  for (std::size_t k = 2; k < parts.size(); ++k) {
+    if (parts[k] == "chain") o.chain_rule = true;
+    else if (parts[k] == "visc") o.viscosity = true;
+    else if (parts[k] == "approach") o.closest_approach = true;
+    else o.torque = spam_torque_from_string(parts[k]);
+  }
+  return o;
+}
+
+}  // namespace sph::scenes
+
+#include "frame/driver.hpp"
+#include "io/hdf5_snapshot.hpp"
+
+namespace sph::scenes {
+
+void hexagon_params(Driver& d, HexagonSetup& s) {
+  d.param("shells", s.shells, "hexagon shells n (N = 1 + 3n + 3n^2)");
+  d.param("dt", s.dt, "RK4 time step");
+  d.param("vmax", s.vmax, "rotation speed at the vertices");
+  d.param("revolutions", s.revolutions, "nominal revolutions to follow");
+}
+
+void write_hdf5_snapshots(const Driver& d, const HexagonRun& r, double omega, double dt) {
+  SnapshotSeries h5(d.out_dir() / ("snapshots_" + value_name(r.variant) + ".h5"), d.info());
+  for (std::size_t k = 0; k < r.snapshots.size(); ++k) {
+    Snapshot s;
+    s.time = r.snapshot_angles[k] / omega;
+    s.step = std::lround(s.time / dt);
+    s.position = r.snapshots[k];
+    s.density = r.snapshot_density[k];
+    h5.write(s);
+  }
+}
+
+std::string value_name(const std::string& label) {
+  std::string s = label;
+  for (char& c : s) if (c == '/') c = '_';
+  return s;
+}
+
+std::vector<HexagonRun> run_and_record(Driver& d, const HexagonSetup& s, const std::vector<HexagonVariant>& variants) {
+  auto series = d.csv("series.csv", series_columns());
+  auto snaps = d.csv("snapshots.csv", snapshot_columns());
+  // The runs are independent: one per thread (each run is serial below kSpamParallelMin particles).
+  std::vector<HexagonRun> runs(variants.size());
+  std::string error;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long k = 0; k < static_cast<long>(variants.size()); ++k) {
+    try {
+      const auto& v = variants[k];
+      runs[k] = v.name == "md" ? run_hexagon_md(s) : run_hexagon_spam(s, v.options, v.name);
+    } catch (const std::exception& e) {
+#pragma omp critical
+      error = e.what();
+    }
+  }
+  if (!error.empty()) throw std::runtime_error(error);
+  for (std::size_t k = 0; k < variants.size(); ++k) {
+    const auto& v = variants[k];
+    HexagonRun& r = runs[k];
+    write_series(series, r, s.omega());
+    write_snapshots(snaps, r);
+    if (variants.size() <= 8) write_hdf5_snapshots(d, r, s.omega(), s.dt);  // not for the 72-run sweep
+    const std::string n = value_name(v.name);
+    for (double a : s.snapshot_angles) {
+      const int deg = static_cast<int>(std::lround(a * 180 / kPi));
+      d.value("L_over_L0_" + std::to_string(deg) + "deg_" + n, r.L_ratio_at_angle(a, s.omega()), "L/L0 at that nominal angle");
+      const std::size_t k = r.sample_at_angle(a, s.omega());
+      const double rms = k < r.t.size() ? r.shape_rms[k] : std::numeric_limits<double>::quiet_NaN();
+      d.value("shape_rms_" + std::to_string(deg) + "deg_" + n, rms, "rms distance from the best-rotated initial hexagon");
+    }
+    double dl = 0, de = 0;
+    for (std::size_t k = 0; k < r.t.size(); ++k) {
+      dl = std::max(dl, std::abs(r.L[k] / r.L0 - 1));
+      de = std::max(de, std::abs((r.K[k] + r.U[k]) / r.E0 - 1));
+    }
+    d.value("max_L_change_" + n, dl, "max |L/L0 - 1| over the run");
+    d.value("max_E_change_" + n, de, "max |E/E0 - 1| over the run");
+    d.value("failed_at_" + n, r.failed ? r.failed_at : -1.0, "time the run blew up (-1: survived)");
+    if (s.track_advection_torque) {
+      double res = 0;
+      for (std::size_t k = 0; k < r.t.size(); ++k) res = std::max(res, std::abs((r.L[k] - r.L0 - r.advection_torque_integral[k]) / r.L0));
+      d.value("max_L_change_less_advection_" + n, res, "max |L - L0 - int sum m (dr/dt) x v dt|/L0: the force torques' part");
+    }
+  }
+  return runs;
+}
+
+}  // namespace sph::scenes

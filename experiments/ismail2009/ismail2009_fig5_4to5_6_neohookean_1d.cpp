@@ -1,0 +1,155 @@
+// Ismail 2009 (thesis), Figs 5.4-5.6 (Section 5.3): 1D neo-Hookean total Lagrangian SPH (Algorithm 5.1).
+//   Fig 5.4  a compressive pulse in the validation bar of Section 4.6.3 (rho = 8000, E = 200 GPa, nu = 0.3):
+//            small strain, so it must travel at c_L = 5801 m/s (eq 4.38) with T11 = -p(t - x/c_L)
+//   Fig 5.5  a 15 mm bar stretched to 90 mm over 30 small-strain transit times, nu = 0.3: T11 at the centre
+//            particle against the static curve T11 = mu (l^2 - 1)/l + lambda ln l / l (eq 5.5, l2 = l3 = 1)
+//   Fig 5.6  the same with nu = 0.49: where does it lose stability (thesis: past a stretch of 3.6)?
+// The analysis (I-nh, src/materials.hpp): for nu = 0.49 P11(l) = T11(l) peaks at l = 3.6307; beyond it the
+// tangent dP11/dl < 0, the wave speed is imaginary and the 1D problem is ill-posed: any discretisation then
+// amplifies short waves. We test whether a smaller step or slower loading moves the loss of stability.
+// CHOSEN: 151 particles on the 15 mm bar (ps = 0.1 mm), h = 5.5 ps; the left end fixed, the right end's
+// displacement ramped linearly in time (constant end velocity from rest: the 'transient portion of the
+// loading' the text blames for the oscillations) over 30 L/c_L of the bar's own nu; dt = 0.5 h/c_L (the
+// tangent speed only falls with stretch for nu = 0.3); loss of stability = the first time the stretches F of
+// two adjacent particles differ by more than 25% of the imposed stretch (a resolved wave changes F by
+// < 0.1 l per spacing; a short-wave instability or localisation jumps), or F is not finite / not positive;
+// oscillation = RMS of (T11 - T11_static(l_imposed)) / T11_static(6) at the centre over the second half of
+// the loading; slower loading = 2x and 4x the loading time. The pulse of Fig 5.4 as I-bar's intermediate.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "frame/driver.hpp"
+#include "core/materials.hpp"
+#include "ismail2009/scenes/bar.hpp"
+
+namespace {
+
+struct StretchResult {
+  double lost_at = NAN;       // imposed stretch at the loss of stability (NaN: none)
+  double oscillation = NAN;   // RMS relative deviation from the static curve, second half
+  double final_T_over_static = NAN;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  sph::Driver d("ismail2009_fig5_4to5_6_neohookean_1d", "I-nh1d", "1D neo-Hookean bar: wave and large stretch");
+  double rho = 8000, E = 200e9, L = 0.015, stretch = 6.0, transits = 30, h_over_ps = 5.5, dt_factor = 0.5, tol = 0.25;
+  int particles = 151;
+  d.param("rho", rho, "density, kg/m^3 (Section 5.3.1)");
+  d.param("E", E, "Young's modulus, Pa (Section 5.3.1)");
+  d.param("length", L, "bar length for the stretch test, m (Section 5.3.2: 15 mm)");
+  d.param("stretch", stretch, "final stretch (90 mm / 15 mm)");
+  d.param("transits", transits, "loading time in small-strain transit times L/c_L (Section 5.3.2: 30)");
+  d.param("particles", particles, "particles on the stretched bar (CHOSEN)");
+  d.param("h-over-ps", h_over_ps, "cover radius in spacings");
+  d.param("dt-factor", dt_factor, "dt / (h/c_L) (CHOSEN)");
+  d.param("loss-tolerance", tol, "loss of stability: max |F_p+1 - F_p| / l above this (CHOSEN)");
+  return d.run(argc, argv, [&] {
+    if (d.quick() && !d.given("particles")) particles = 61;
+
+    // ---- Fig 5.4: the small-strain wave ---------------------------------------------------------------------
+    {
+      const double nu = 0.3, Lb = 0.15, ps = d.quick() ? 0.6e-3 : 0.15e-3, p0 = 1e5, pulse = 5e-6;
+      const sph::Lame m = sph::lame_from_young_poisson(E, nu);
+      const double c = sph::longitudinal_wave_speed(m, rho);
+      const scenes::SmoothedPulse p(p0, pulse, 0.5e-6);
+      sph::BarConfig1D cfg;
+      cfg.length = Lb;
+      cfg.ps = ps;
+      cfg.h_over_ps = h_over_ps;
+      cfg.law = sph::BarConfig1D::Law::NeoHookean;
+      cfg.lame = m;
+      cfg.density = [rho](double) { return rho; };
+      cfg.left.value = [p](double t) { return -p(t); };
+      cfg.right.kind = sph::EndCondition1D::Kind::Displacement;
+      sph::Bar1D bar(cfg);
+      const std::vector<double> gauges{0.0, Lb / 3, 2 * Lb / 3, Lb};
+      const auto r = scenes::run_bar(bar, 0.5 * bar.h() / c, 40e-6, gauges);
+      auto w = d.csv("wave.csv", {"t", "gauge", "x", "T11", "T11_exact"});
+      for (std::size_t g = 0; g < gauges.size(); ++g)
+        for (std::size_t i = 0; i < r.t.size(); ++i) {
+          const double t = r.t[i], x = gauges[g];
+          w.row(t, static_cast<int>(g + 1), x, r.T[g][i], -p(t - x / c) - (t > (2 * Lb - x) / c ? p(t - (2 * Lb - x) / c) : 0.0));
+        }
+      auto centroid = [&](int g) {
+        const double t50 = scenes::crossing_time(r.t, r.T[g], -0.5 * p0);
+        return scenes::centroid_time(r.t, r.T[g], t50 - 0.5 * pulse, t50 + 1.5 * pulse);
+      };
+      const double speed = (gauges[2] - gauges[1]) / (centroid(2) - centroid(1));
+      d.value("wave_speed", speed, "pulse centroids, gauges 2-3, m/s");
+      d.value("wave_speed_vs_paper_eq19", speed, "the same speed, compared with the appended paper's c_b (eqs 18-19)");
+      const double mid = scenes::crossing_time(r.t, r.T[2], -0.5 * p0) + 0.5 * pulse;
+      d.value("plateau_over_p0_gauge3", scenes::window_mean(r.t, r.T[2], mid - 0.1 * pulse, mid + 0.1 * pulse) / p0,
+              "mean T11 mid-pulse at x = 0.1 m / p0");
+    }
+
+    // ---- Figs 5.5-5.6: the stretch test ----------------------------------------------------------------------
+    auto curves = d.csv("curves.csv", {"case", "nu", "t", "stretch_imposed", "F_centre", "T11_centre", "T11_static"});
+    auto run_stretch = [&](double nu, double slow, double dt_scale, const std::string& name, bool write) {
+      const sph::Lame m = sph::lame_from_young_poisson(E, nu);
+      const double c = sph::longitudinal_wave_speed(m, rho), T_load = slow * transits * L / c;
+      const double ps = L / (particles - 1);
+      sph::BarConfig1D cfg;
+      cfg.length = L;
+      cfg.ps = ps;
+      cfg.h_over_ps = h_over_ps;
+      cfg.law = sph::BarConfig1D::Law::NeoHookean;
+      cfg.lame = m;
+      cfg.density = [rho](double) { return rho; };
+      cfg.left.kind = cfg.right.kind = sph::EndCondition1D::Kind::Displacement;
+      cfg.right.value = [=](double t) { return (stretch - 1.0) * L * std::min(t / T_load, 1.0); };
+      sph::Bar1D bar(cfg);
+      const double dt = dt_scale * dt_factor * bar.h() / c;
+      auto T_static = [&](double l) { return bar.law(l); };
+      const int centre = bar.n_real() / 2, n = static_cast<int>(std::ceil(T_load / dt));
+      const int every = std::max(1, n / 2000);
+      StretchResult res;
+      double s2 = 0;
+      int ns = 0;
+      for (int s = 0; s < n; ++s) {
+        const double t = bar.time(), l = 1.0 + (stretch - 1.0) * std::min(t / T_load, 1.0);
+        bar.step(dt);
+        double dev = 0;
+        bool bad = !bar.finite();
+        for (int i = 0; i < bar.n_real() && !bad; ++i) {
+          if (!(bar.stretch(i) > 0)) bad = true;
+          if (i > 0) dev = std::max(dev, std::abs(bar.stretch(i) - bar.stretch(i - 1)) / l);
+        }
+        if (bad || dev > tol) { res.lost_at = l; break; }
+        const double Tc = bar.stress(centre);
+        if (t > 0.5 * T_load) { s2 += std::pow((Tc - T_static(l)) / T_static(stretch), 2); ++ns; }
+        if (write && s % every == 0) curves.row(name, nu, t, l, bar.stretch(centre), Tc, T_static(l));
+        res.final_T_over_static = Tc / T_static(l);
+      }
+      res.oscillation = ns ? std::sqrt(s2 / ns) : NAN;
+      return res;
+    };
+    for (double nu : {0.3, 0.49}) {
+      const std::string tag = nu < 0.4 ? "nu0.3" : "nu0.49";
+      const auto base = run_stretch(nu, 1.0, 1.0, tag, true);
+      const auto slow2 = run_stretch(nu, 2.0, 1.0, tag + "_slow2", true);
+      const auto slow4 = run_stretch(nu, 4.0, 1.0, tag + "_slow4", !d.quick());
+      const auto half = run_stretch(nu, 1.0, 0.5, tag + "_dt_half", false);
+      auto lost = [](const StretchResult& r) { return std::isnan(r.lost_at) ? 0.0 : r.lost_at; };
+      d.value("stability_lost_at_stretch_" + tag, lost(base), "imposed stretch at the loss of stability (0 = never)");
+      d.value("stability_lost_at_stretch_" + tag + "_slow2", lost(slow2), "loading time x2");
+      d.value("stability_lost_at_stretch_" + tag + "_slow4", lost(slow4), "loading time x4");
+      d.value("stability_lost_at_stretch_" + tag + "_dt_half", lost(half), "dt / 2");
+      if (nu < 0.4) {
+        d.value("oscillation_" + tag, base.oscillation, "RMS (T11 - static)/T11_static(6), centre, 2nd half");
+        d.value("oscillation_ratio_slow2_over_base_" + tag, slow2.oscillation / base.oscillation, "Section 5.3.2: slower loading, smaller oscillation");
+        d.value("oscillation_ratio_slow4_over_base_" + tag, slow4.oscillation / base.oscillation, "loading time x4");
+      }
+    }
+    // The analysis: the stretch at which the 1D-strain P11(l) peaks for nu = 0.49 (dP11/dl = 0), by bisection.
+    {
+      const sph::Lame m = sph::lame_from_young_poisson(E, 0.49);
+      auto slope = [&](double l) { return m.mu * (1 + 1 / (l * l)) + m.lambda * (1 - std::log(l)) / (l * l); };
+      double a = 1.0, b = 10.0;
+      for (int i = 0; i < 100; ++i) { const double c = 0.5 * (a + b); (slope(c) > 0 ? a : b) = c; }
+      d.value("peak_stretch_P11_nu0.49", a, "dP11/dl = 0 for l2 = l3 = 1 (eq 5.4)");
+    }
+  });
+}

@@ -1,0 +1,109 @@
+// Cell-linked list in 2D with optional periodic boundaries.
+//
+// Particles are binned into square cells of side >= the search radius (counting sort, O(N), no
+// allocation once the arrays have reached their size), and a query visits the 3 x 3 block of cells
+// around a particle. With periodic boundaries displacements use the minimum image, which requires the
+// search radius to be at most half the period (checked).
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "core/lattices.hpp"
+
+namespace sph {
+
+struct Box2 {
+  double xmin = 0, ymin = 0, xmax = 1, ymax = 1;
+  bool periodic_x = false, periodic_y = false;
+  double Lx() const { return xmax - xmin; }
+  double Ly() const { return ymax - ymin; }
+};
+
+/// The smallest non-periodic box holding all points (throws on an empty set).
+Box2 bounding_box(const std::vector<Vec2>& points);
+
+class CellList2D {
+ public:
+  /// `radius` is the largest search radius that queries will use. For a non-periodic direction the box
+  /// only sizes the grid: particles outside it are binned into the edge cells, so a query stays exact.
+  CellList2D(const Box2& box, double radius);
+
+  /// Bins the particles. Call again whenever positions change.
+  void build(const std::vector<Vec2>& x);
+
+  /// x_a - x_b, by the minimum image in periodic directions.
+  Vec2 displacement(const Vec2& a, const Vec2& b) const {
+    Vec2 d = a - b;
+    if (box_.periodic_x) d.x() -= box_.Lx() * std::nearbyint(d.x() / box_.Lx());
+    if (box_.periodic_y) d.y() -= box_.Ly() * std::nearbyint(d.y() / box_.Ly());
+    return d;
+  }
+
+  /// Calls f(j, d, r) for every particle j != i with r = |d| < radius, d = x_i - x_j (minimum image).
+  /// `radius` must not exceed the radius the list was built for (the stencil would miss pairs): throws.
+  /// A relative excess of 1e-12 (the same radius computed another way) is allowed: the cells have a
+  /// 1e-9 margin (see the constructor).
+  template <class F>
+  void for_each_neighbour(const std::vector<Vec2>& x, std::size_t i, double radius, F&& f) const {
+    if (radius > radius_ * (1.0 + 1e-12)) throw_radius_too_large(radius);
+    const double r2max = radius * radius;
+    const int cx = cell_x(x[i].x()), cy = cell_y(x[i].y());
+    for (int oy = -span_y_; oy <= span_y_; ++oy) {
+      const int jy = wrap_or_skip(cy + oy, ny_, box_.periodic_y);
+      if (jy < 0) continue;
+      for (int ox = -span_x_; ox <= span_x_; ++ox) {
+        const int jx = wrap_or_skip(cx + ox, nx_, box_.periodic_x);
+        if (jx < 0) continue;
+        const int c = jy * nx_ + jx;
+        for (std::size_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+          const std::size_t j = sorted_[k];
+          if (j == i) continue;
+          const Vec2 d = displacement(x[i], x[j]);
+          const double r2 = d.squaredNorm();
+          if (r2 >= r2max) continue;
+          // r2 < radius^2 can hold (rounding) with sqrt(r2) == radius: test r itself, as promised.
+          const double r = std::sqrt(r2);
+          if (r < radius) f(j, d, r);
+        }
+      }
+    }
+  }
+
+  int cells_x() const { return nx_; }
+  int cells_y() const { return ny_; }
+  const Box2& box() const { return box_; }
+  double radius() const { return radius_; }
+
+ private:
+  int cell_x(double x) const { return cell_index(x, box_.xmin, box_.Lx(), nx_, box_.periodic_x); }
+  int cell_y(double y) const { return cell_index(y, box_.ymin, box_.Ly(), ny_, box_.periodic_y); }
+  static int cell_index(double v, double vmin, double L, int n, bool periodic) {
+    double t = (v - vmin) / L;
+    if (periodic) t -= std::floor(t);
+    // Clamp before converting: a particle far outside a non-periodic box can have t * n beyond the range
+    // of int, and converting that is undefined behaviour.
+    const double c = std::floor(t * n);
+    return c < 0 ? 0 : (c >= n ? n - 1 : static_cast<int>(c));
+  }
+  [[noreturn]] void throw_radius_too_large(double radius) const;
+  // A periodic direction with fewer than 3 cells is scanned whole once (span 0 covers it: see ctor).
+  static int wrap_or_skip(int c, int n, bool periodic) {
+    if (c >= 0 && c < n) return c;
+    if (!periodic) return -1;
+    return ((c % n) + n) % n;
+  }
+
+  Box2 box_;
+  double radius_;
+  int nx_ = 1, ny_ = 1, span_x_ = 1, span_y_ = 1;
+  std::vector<std::size_t> cell_start_, sorted_, cell_of_;
+};
+
+/// All pairs (i, j != i) within `radius` by direct O(N^2) search: the reference the cell list is
+/// tested against, and nothing else.
+std::vector<std::vector<std::size_t>> brute_force_neighbours(const std::vector<Vec2>& x, const Box2& box,
+                                                             double radius);
+
+}  // namespace sph

@@ -1,0 +1,91 @@
+// Neighbour pairs in compressed-row form with the kernel values cached per pair (a Verlet list).
+//
+// Candidates are collected from the cell list within the kernel support plus a skin, and only
+// re-collected when some particle has moved more than half the skin since the last collection (two
+// particles then cannot have come within the support unseen). Every step only refreshes the cached
+// geometry (x_a - x_b, W, F) of the candidates; pairs outside the support get W = F = 0. Every pass of
+// the force evaluations at the same positions reads the cache, so the kernel is evaluated once per pair
+// per step. Each pair appears twice (a->b and b->a): passes gather into their own particle only, which
+// parallelises over particles without atomics. No allocation once the arrays have reached their size.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/neighbours.hpp"
+
+namespace sph {
+
+struct PairList {
+  std::vector<std::uint32_t> start;  ///< pairs of particle a: [start[a], start[a+1])
+  std::vector<std::uint32_t> b;      ///< neighbour index
+  std::vector<Vec2> dx;              ///< x_a - x_b (minimum image)
+  std::vector<double> W;             ///< W(r_ab, h), 0 beyond the support
+  std::vector<double> F;             ///< F_ab with grad_a W_ab = dx F_ab (Gray et al. 2001 eq 3.2)
+  long collections = 0;              ///< how often the candidates were re-collected (diagnostics)
+
+  std::size_t pairs() const { return b.size(); }
+
+  /// Brings the list up to date for positions x. `cells` must have been constructed with a radius of
+  /// at least support * h + skin; it is rebuilt here when the candidates are re-collected.
+  template <class Kernel>
+  void update(CellList2D& cells, const std::vector<Vec2>& x, const Kernel& kernel, double h, double skin) {
+    if (must_collect(x, skin)) {
+      cells.build(x);
+      collect(cells, x, kernel.support() * h + skin);
+    }
+    refresh(cells, x, kernel, h);
+  }
+
+ private:
+  bool must_collect(const std::vector<Vec2>& x, double skin) const {
+    if (x_collected_.size() != x.size()) return true;
+    const double limit2 = 0.25 * skin * skin;
+    bool moved = false;
+#pragma omp parallel for reduction(|| : moved) schedule(static)
+    for (std::size_t a = 0; a < x.size(); ++a) moved = moved || (x[a] - x_collected_[a]).squaredNorm() > limit2;
+    return moved;
+  }
+
+  void collect(const CellList2D& cells, const std::vector<Vec2>& x, double radius) {
+    const std::size_t n = x.size();
+    start.resize(n + 1);
+    start[0] = 0;
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = 0; a < n; ++a) {
+      std::uint32_t count = 0;
+      cells.for_each_neighbour(x, a, radius, [&](std::size_t, const Vec2&, double) { ++count; });
+      start[a + 1] = count;
+    }
+    for (std::size_t a = 0; a < n; ++a) start[a + 1] += start[a];
+    const std::size_t total = start[n];
+    b.resize(total);
+    dx.resize(total);
+    W.resize(total);
+    F.resize(total);
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = 0; a < n; ++a) {
+      std::uint32_t k = start[a];
+      cells.for_each_neighbour(x, a, radius, [&](std::size_t j, const Vec2&, double) { b[k++] = static_cast<std::uint32_t>(j); });
+    }
+    x_collected_ = x;
+    ++collections;
+  }
+
+  template <class Kernel>
+  void refresh(const CellList2D& cells, const std::vector<Vec2>& x, const Kernel& kernel, double h) {
+    const std::size_t n = x.size();
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::uint32_t k = start[a]; k < start[a + 1]; ++k) {
+        const Vec2 d = cells.displacement(x[a], x[b[k]]);
+        const double r = d.norm();
+        dx[k] = d;
+        kernel.W_and_F(r, h, W[k], F[k]);  // both vanish beyond the support
+      }
+  }
+
+  std::vector<Vec2> x_collected_;
+};
+
+}  // namespace sph

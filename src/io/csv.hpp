@@ -1,0 +1,54 @@
+// CSV output with a self-describing header:
+//   # driver = ..., # target = ..., # code_version = ..., # date = ..., # param.<name> = <value> ...
+//   col1,col2,...
+//   rows
+// Lines starting with '#' are comments to pandas (comment='#') and to the plotting scripts.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "io/run_info.hpp"
+
+namespace sph {
+
+class CsvWriter {
+ public:
+  CsvWriter(const std::filesystem::path& path, const RunInfo& info, std::vector<std::string> columns);
+
+  template <class... T>
+  void row(const T&... values) {
+    static_assert(sizeof...(T) > 0, "empty row");
+    std::vector<std::string> cells{cell(values)...};
+    write_cells(cells);
+  }
+  void write_cells(const std::vector<std::string>& cells);
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  template <class T>
+  static std::string cell(const T& v) {
+    if constexpr (std::is_arithmetic_v<T>) return format_number(static_cast<double>(v));
+    else return quote(std::string(v));
+  }
+  static std::string quote(const std::string& s);
+
+  std::filesystem::path path_;
+  std::size_t ncols_;
+  std::ofstream out_;
+};
+
+/// A parsed CSV: the header comments as key/value pairs, column names and string cells.
+struct CsvTable {
+  std::vector<std::pair<std::string, std::string>> meta;
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+  std::string meta_value(const std::string& key) const;
+  std::size_t column(const std::string& name) const;  // throws if absent
+};
+CsvTable read_csv(const std::filesystem::path& path);
+
+}  // namespace sph

@@ -1,0 +1,131 @@
+#include "total_lagrangian/sph_matrices.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+#include "core/kernels.hpp"
+#include "core/neighbours.hpp"
+
+namespace sph {
+
+KernelFn make_kernel_fn(const std::string& name, int dim, double h) {
+  if (!(h > 0)) throw std::invalid_argument("make_kernel_fn: h must be positive");
+  return with_kernel(name, dim, [&](auto kernel) {
+    KernelFn k;
+    k.name = name;
+    k.dim = dim;
+    k.h = h;
+    k.radius = kernel.support() * h;
+    k.W = [kernel, h](double r) { return kernel.W(r, h); };
+    k.dWdr = [kernel, h](double r) { return kernel.dWdr(r, h); };
+    return k;
+  });
+}
+
+SphMatrices1D build_sph_matrices_1d(const KernelFn& k, const std::vector<double>& x, const std::vector<double>& dV,
+                                    double pattern_factor) {
+  if (x.size() != dV.size()) throw std::invalid_argument("build_sph_matrices_1d: one volume per particle");
+  if (pattern_factor < 1.0) throw std::invalid_argument("build_sph_matrices_1d: pattern_factor must be >= 1");
+  const int n = static_cast<int>(x.size());
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return x[a] < x[b]; });
+  const double R = pattern_factor * k.radius;
+  std::vector<Eigen::Triplet<double, int>> tw, tx;
+  for (int a = 0; a < n; ++a) {
+    const int p = order[a];
+    for (int dir : {-1, 1}) {
+      for (int b = a + (dir < 0 ? 0 : 1); b >= 0 && b < n; b += dir) {
+        const int q = order[b];
+        const double d = x[p] - x[q];
+        if (std::abs(d) >= R) break;
+        const double r = std::abs(d);
+        const bool in = r < k.radius;
+        tw.emplace_back(p, q, in ? k.W(r) * dV[q] : 0.0);
+        tx.emplace_back(p, q, in && r > 0 ? k.dWdr(r) * (d > 0 ? 1.0 : -1.0) * dV[q] : 0.0);
+      }
+    }
+  }
+  SphMatrices1D m;
+  m.W.resize(n, n);
+  m.X.resize(n, n);
+  m.W.setFromTriplets(tw.begin(), tw.end());
+  m.X.setFromTriplets(tx.begin(), tx.end());
+  m.W.makeCompressed();
+  m.X.makeCompressed();
+  return m;
+}
+
+void update_sph_matrices_1d(SphMatrices1D& m, const KernelFn& k, const std::vector<double>& x,
+                            const std::vector<double>& dV) {
+  const int n = static_cast<int>(m.W.rows());
+#pragma omp parallel for schedule(static)
+  for (int p = 0; p < n; ++p) {
+    SparseMatrix::InnerIterator iw(m.W, p);
+    SparseMatrix::InnerIterator ix(m.X, p);
+    for (; iw; ++iw, ++ix) {
+      const int q = iw.col();
+      const double d = x[p] - x[q], r = std::abs(d);
+      const bool in = r < k.radius;
+      iw.valueRef() = in ? k.W(r) * dV[q] : 0.0;
+      ix.valueRef() = in && r > 0 ? k.dWdr(r) * (d > 0 ? 1.0 : -1.0) * dV[q] : 0.0;
+    }
+  }
+}
+
+SphMatrices2D build_sph_matrices_2d(const KernelFn& k, const std::vector<Vec2>& x, const std::vector<double>& dV) {
+  if (x.size() != dV.size()) throw std::invalid_argument("build_sph_matrices_2d: one volume per particle");
+  if (k.dim != 2) throw std::invalid_argument("build_sph_matrices_2d: kernel must be 2D");
+  const int n = static_cast<int>(x.size());
+  Box2 box = bounding_box(x);
+  box.xmax += k.radius; box.ymax += k.radius;  // non-empty even for a single row or column
+  CellList2D cells(box, k.radius);
+  cells.build(x);
+  // Row p's entries are found independently of every other row: fill rows in parallel into per-row lists.
+  std::vector<std::vector<std::pair<int, Vec2>>> rows(n);  // (q, x_p - x_q)
+#pragma omp parallel for schedule(dynamic, 64)
+  for (int p = 0; p < n; ++p) {
+    rows[p].emplace_back(p, Vec2::Zero());
+    cells.for_each_neighbour(x, p, k.radius, [&](std::size_t q, const Vec2& d, double) {
+      rows[p].emplace_back(static_cast<int>(q), d);
+    });
+    std::sort(rows[p].begin(), rows[p].end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
+  SphMatrices2D m;
+  for (SparseMatrix* A : {&m.W, &m.X, &m.Y}) {
+    A->resize(n, n);
+    Eigen::VectorXi nnz(n);
+    for (int p = 0; p < n; ++p) nnz[p] = static_cast<int>(rows[p].size());
+    A->reserve(nnz);
+  }
+  for (int p = 0; p < n; ++p) {
+    for (const auto& [q, d] : rows[p]) {
+      const double r = d.norm();
+      const double g = r > 0 ? k.dWdr(r) / r * dV[q] : 0.0;  // grad_p W = dW/dr (x_p - x_q)/r
+      m.W.insert(p, q) = k.W(r) * dV[q];
+      m.X.insert(p, q) = g * d.x();
+      m.Y.insert(p, q) = g * d.y();
+    }
+  }
+  m.W.makeCompressed();
+  m.X.makeCompressed();
+  m.Y.makeCompressed();
+  return m;
+}
+
+void spmv(const SparseMatrix& A, const Eigen::VectorXd& v, Eigen::VectorXd& y) {
+  const int n = static_cast<int>(A.rows());
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  const double* val = A.valuePtr();
+#pragma omp parallel for schedule(static) if (n > 50000)  // below this the fork/join costs more than the rows
+  for (int p = 0; p < n; ++p) {
+    double s = 0.0;
+    for (int k = outer[p]; k < outer[p + 1]; ++k) s += val[k] * v[inner[k]];
+    y[p] = s;
+  }
+}
+
+}  // namespace sph
