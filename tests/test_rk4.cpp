@@ -1,4 +1,4 @@
-// RK4 (src/rk4.hpp): fourth-order convergence on the harmonic oscillator, exactness on a cubic in t,
+// RK4 (src/core/rk4.hpp): fourth-order convergence on the harmonic oscillator, exactness on a cubic in t,
 // and no reallocation of the stage buffers after the first step.
 #include <gtest/gtest.h>
 
@@ -9,11 +9,10 @@
 
 namespace {
 
-struct Osc {  // x'' = -x as (x, v)
+struct Osc {  // x'' = -x as (x, v): one field of two entries
   std::vector<double> y;
-  void resize_like(const Osc& o) { y.resize(o.y.size()); }
-  void set_axpy(const Osc& x, double a, const Osc& k) { sph::vec_set_axpy(y, x.y, a, k.y); }
-  void axpy(double a, const Osc& k) { sph::vec_axpy(y, a, k.y); }
+  auto fields() { return std::tie(y); }
+  auto fields() const { return std::tie(y); }
 };
 
 double oscillator_error(int steps) {

@@ -125,8 +125,8 @@ TEST(Spam, PairTorquesBalanceAfterScaling) {
   EXPECT_NE(wk.torque_ratio, 1.0);
   double sum = 0, abs_sum = 0;
   for (std::size_t i = 0; i < dy.size(); ++i)
-    for (std::size_t k = i * wk.slots; k < i * wk.slots + wk.count[i]; ++k) {
-      const double t = wk.d[k].x() * wk.f[k].y() - wk.d[k].y() * wk.f[k].x();
+    for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
+      const double t = wk.pairs.dx[k].x() * wk.f[k].y() - wk.pairs.dx[k].y() * wk.f[k].x();
       sum += t; abs_sum += std::abs(t);
     }
   EXPECT_LT(std::abs(sum), 1e-14 * abs_sum);

@@ -9,9 +9,10 @@
 // Writes <out>/bench_gray_scenes.csv with the columns of results/bench.csv.
 #include <omp.h>
 
-#include <chrono>
+#include <stdexcept>
 
 #include "frame/driver.hpp"
+#include "core/run_loop.hpp"
 #include "updated_lagrangian/gray_solver.hpp"
 #include "gray2001/scenes/plate.hpp"
 #include "gray2001/scenes/rings.hpp"
@@ -21,15 +22,15 @@ namespace {
 
 struct Timing { double wall_s; long steps; std::size_t particles; };
 
-Timing time_run(sph::ElasticBody body, sph::GrayParameters p, const sph::GrayOptions& o, int threads, int steps) {
+Timing time_run(sph::ElasticBody body, const sph::GrayParameters& p, const sph::GrayOptions& o, int threads, int steps) {
   omp_set_num_threads(threads);
   sph::GraySolver solver(body, p, o);
-  const double dt = sph::gray_time_step(p, 0.25, 0.06);
-  for (int i = 0; i < 5; ++i) solver.step(dt);  // warm-up: first pair collection, page faults
-  const auto t0 = std::chrono::steady_clock::now();
-  for (int i = 0; i < steps; ++i) solver.step(dt);
-  const double w = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return {w, steps, body.size()};
+  const double dt = solver.time_step(0.06);
+  auto none = [](const sph::GraySolver&) { return false; };
+  sph::run(solver, {dt, 5}, none);  // warm-up: first pair collection, page faults
+  const auto timed = sph::run(solver, {dt, steps}, none);
+  if (timed.blew_up()) throw std::runtime_error(timed.blow_up);
+  return {timed.wall_s, steps, body.size()};
 }
 
 }  // namespace
@@ -48,12 +49,8 @@ int main(int argc, char** argv) {
     // Rings, PySPH layout.
     scenes::RingsSpec rs;
     rs.dp = 0.05;
-    const auto rings = scenes::make_rings(rs);
-    sph::GrayParameters rp;
-    rp.mu = 0.22;
-    rp.dp = rs.dp;
-    rp.h = 1.5 * rs.dp;
-    rp.box = rings.box;
+    const sph::GrayParameters rp;  // the scheme's defaults: Sec 7.2's mu = 0.22, h = 1.5 dp
+    const auto rings = scenes::make_rings(rs, rp.rho0);
     double rate[3] = {0, 0, 0};
     for (int t : threads) {
       const auto tm = time_run(rings.body, rp, sph::GrayOptions{}, t, steps);
@@ -67,11 +64,8 @@ int main(int argc, char** argv) {
     scenes::PlateSpec ps;
     ps.dp = 0.1;
     ps.Vf = 0.01;
-    const auto plate = scenes::make_plate(ps);
-    sph::GrayParameters pp;
-    pp.dp = ps.dp;
-    pp.h = 1.5 * ps.dp;
-    pp.box = plate.box;
+    const sph::GrayParameters pp;
+    const auto plate = scenes::make_plate(ps, pp);
     struct Variant { const char* name; sph::GrayOptions o; };
     sph::GrayOptions full, no_as, no_xsph, no_visc, none;
     no_as.artificial_stress = false;
@@ -89,14 +83,9 @@ int main(int argc, char** argv) {
     // Slab of Figs 8-10 at the paper's resolution, with and without the plastic return.
     scenes::SlabSpec ss;
     ss.dp = 0.016;
-    const auto slab = scenes::make_slab(ss);
-    sph::GrayParameters sp;
-    sp.mu = 0.3;
-    sp.dp = ss.dp;
-    sp.h = 1.5 * ss.dp;
-    sp.box = slab.box;
-    sph::GrayOptions plastic, elastic;
-    plastic.plasticity = true;
+    const sph::GrayParameters sp = scenes::slab_scheme();
+    const auto slab = scenes::make_slab(ss, sp.rho0);
+    sph::GrayOptions plastic = scenes::slab_options(), elastic;
     for (const Variant& v : {Variant{"artstress+xsph+visc+vonmises", plastic}, Variant{"no plasticity", elastic}})
       for (int t : threads) {
         if (t == 1 && !v.o.plasticity) continue;

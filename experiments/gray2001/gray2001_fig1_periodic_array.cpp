@@ -19,7 +19,8 @@
 
 #include "frame/driver.hpp"
 #include "updated_lagrangian/gray_solver.hpp"
-#include "io/hdf5_snapshot.hpp"
+#include "core/run_loop.hpp"
+#include "io/snapshot.hpp"
 
 namespace {
 
@@ -57,13 +58,14 @@ Order order_parameters(const std::vector<sph::Vec2>& x, int n, double dp, const 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig1_periodic_array", "G-fig1", "Gray et al. 2001 Fig 1: periodic square array under pressure");
   int n = 20, steps = 10000, every = 500;
-  double pressure = 0.05, mu = 0.22, cfl = 0.25, seed_amp = 1e-4;
+  double pressure = 0.05, seed_amp = 1e-4;
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp): mu = 0.22, cfl = 0.25
   std::vector<double> h_over_dp{1.0, 1.5};
   d.param("n", n, "particles per side of the periodic cell");
   d.param("steps", steps, "time steps (Gray 2001: 10 000)");
   d.param("pressure", pressure, "initial pressure P / (rho0 c0^2), positive");
-  d.param("mu", mu, "shear modulus");
-  d.param("cfl", cfl, "time-step factor");
+  d.param("mu", scheme.mu, "shear modulus");
+  d.param("cfl", scheme.cfl, "time-step factor");
   d.param("seed-amplitude", seed_amp, "random initial displacement / dp");
   d.param("h-over-dp", h_over_dp, "smoothing lengths to run");
   d.param("sample-every", every, "steps between recorded order parameters");
@@ -81,27 +83,24 @@ int main(int argc, char** argv) {
       std::uniform_real_distribution<double> u(-1.0, 1.0);
       for (const auto& p : sph::lattice_block(sph::LatticeKind::Square, n, n, dp, sph::Vec2(0.5 * dp, 0.5 * dp)))
         body.add(p + seed_amp * dp * sph::Vec2(u(rng), u(rng)), sph::Vec2::Zero(), dp * dp, 1.0 + pressure);
-      sph::GrayParameters p;
-      p.mu = mu;
-      p.dp = dp;
-      p.h = hr * dp;
-      p.box = {0, 0, 1, 1, true, true};
+      body.dp = dp;
+      body.box = {0, 0, 1, 1, true, true};
+      sph::GrayParameters p = scheme;
+      p.h_over_dp = hr;
       sph::GraySolver solver(body, p, sph::GrayOptions{});
-      const double dt = sph::gray_time_step(p, cfl, 0.0);
+      const double dt = solver.time_step(0.0);
       sph::SnapshotSeries snaps(d.out_dir() / ("snapshots_h" + sph::format_number(hr) + ".h5"), d.info());
-      auto record = [&] {
-        const Order o = order_parameters(body.x, n, dp, p.box);
-        series.row(hr, solver.steps(), solver.time(), o.shift_columns, o.shift_rows, std::max(o.shift_columns, o.shift_rows), o.disorder);
-        sph::Snapshot s{solver.time(), solver.steps(), body.x, body.v, body.rho, {}, {}, {}};
-        snaps.write(s);
-        return o;
-      };
-      record();
       Order o{};
-      for (int k = 1; k <= steps; ++k) {
-        solver.step(dt);
-        if (k % every == 0 || k == steps) o = record();
-      }
+      auto record = [&](const sph::GraySolver& sv) {
+        const long k = sv.steps();
+        if (!(k == 0 || k % every == 0 || k == steps)) return false;
+        o = order_parameters(body.x, n, dp, body.box);
+        series.row(hr, sv.steps(), sv.time(), o.shift_columns, o.shift_rows, std::max(o.shift_columns, o.shift_rows), o.disorder);
+        snaps.write(sph::snapshot_of(sv));
+        return false;
+      };
+      const auto outcome = sph::run(solver, {dt, steps}, record);
+      if (outcome.blew_up()) throw std::runtime_error(outcome.blow_up);
       for (std::size_t a = 0; a < body.size(); ++a) finals.row(hr, a, body.x[a].x(), body.x[a].y());
       const std::string tag = hr == 1.0 ? "h1" : hr == 1.5 ? "h1p5" : "h" + sph::format_number(hr);
       d.value("shift_order_" + tag, std::max(o.shift_columns, o.shift_rows), "0 square, 1 face-centred (after the run)");

@@ -15,15 +15,18 @@
 #include "core/fragments.hpp"
 #include "core/materials.hpp"
 #include "gray2001/scenes/plate_run.hpp"
+#include "io/snapshot.hpp"
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig2_3_plate_fracture", "G-fig2", "Gray et al. 2001 Figs 2-3: plate fracture without, stability with artificial stress");
-  double dp = 0.2, clamp = 2.0, cfl = 0.25, mu = 0.6, Vf = 0.05, periods = 10.0, snapshot_every = 100.0;
+  double dp = 0.2, clamp = 2.0, Vf = 0.05, periods = 10.0, snapshot_every = 100.0;
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp) but mu:
+  scheme.mu = 0.6;             // Figs 2-3
   long max_steps = -1;
   d.param("dp", dp, "particle spacing");
   d.param("clamp-length", clamp, "plate length held between the fixed layers");
-  d.param("cfl", cfl, "time-step factor");
-  d.param("mu", mu, "shear modulus (Gray 2001 Figs 2-3: 0.60)");
+  d.param("cfl", scheme.cfl, "time-step factor");
+  d.param("mu", scheme.mu, "shear modulus (Gray 2001 Figs 2-3: 0.60)");
   d.param("Vf", Vf, "tip speed / c0 (Figs 2-3: 0.05)");
   d.param("periods", periods, "length of the eps = 0.3 run in theoretical periods");
   d.param("snapshot-every", snapshot_every, "time between snapshots (HDF5; CSV frames during the first period)");
@@ -33,6 +36,7 @@ int main(int argc, char** argv) {
     if (d.quick() && !d.given("dp")) dp = 0.25;
     if (d.quick() && !d.given("periods")) periods = 1.0;
     const double K = 1.0;
+    const double mu = scheme.mu;
     const double T = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), 2.0, 20.0, 1.0);
     auto summary = d.csv("summary.csv", {"eps", "t_end", "steps", "wall_s", "fracture_time", "fracture_time_over_T", "crack_x", "fragments_at_end"});
     for (const double eps : {0.0, 0.3}) {
@@ -41,10 +45,9 @@ int main(int argc, char** argv) {
       s.plate.dp = dp;
       s.plate.clamp_length = clamp;
       s.plate.Vf = Vf;
-      s.mu = mu;
-      s.cfl = cfl;
+      s.scheme = scheme;
       s.options.artificial_stress = eps > 0;
-      s.eps_artificial = eps;
+      s.scheme.eps_artificial = eps;
       s.t_end = eps > 0 ? periods * T : 1.0 * T;  // the standard run breaks well within one period
       s.max_steps = max_steps;
       s.sample_dt = 1.0;
@@ -59,7 +62,7 @@ int main(int argc, char** argv) {
       auto on_sample = [&](const sph::GraySolver& solver, const sph::ElasticBody& body) {
         if (solver.time() + 1e-9 >= next_snap) {
           next_snap += snapshot_every;
-          snaps.write(scenes::snapshot_of(solver, body));
+          snaps.write(sph::snapshot_of(solver));
           if (solver.time() <= frames_until + 1e-9) scenes::write_frame(frames, solver, body);
         }
         // Crack position, at the fracture checks' interval until found: the piece holding the clamped end
@@ -72,7 +75,7 @@ int main(int argc, char** argv) {
           free_p[a] = body.motion[a] == sph::Motion::Free;
           if (free_p[a] && body.x[a].x() < body.x[root].x()) root = a;
         }
-        const auto f = sph::find_fragments(body.x, solver.params().box, 1.5 * dp, free_p);
+        const auto f = sph::find_fragments(body.x, body.box, 1.5 * dp, free_p);
         if (f.count > 1 && std::isnan(crack_x)) {
           double xmax = -1e300;
           for (std::size_t a = 0; a < body.size(); ++a)

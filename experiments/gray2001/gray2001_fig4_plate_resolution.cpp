@@ -19,13 +19,14 @@ int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig4_plate_resolution", "G-fig4", "Gray et al. 2001 Fig 4: plate tip y(t) against resolution");
   std::vector<int> ns{10, 20, 30};
   std::vector<double> alphas{0.5, 2.0};
-  double clamp = 2.0, cfl = 0.25, mu = 0.22, Vf = 0.01, periods = 1.0, alpha = 1.0;
+  double clamp = 2.0, Vf = 0.01, periods = 1.0;
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp); Fig 4's mu = 0.22 is the default
   d.param("n", ns, "particles across H = 2");
-  d.param("alpha", alpha, "artificial viscosity alpha (= beta) of the resolution runs");
+  d.param("alpha", scheme.alpha, "artificial viscosity alpha (= beta) of the resolution runs");
   d.param("alphas-coarse", alphas, "further alpha (= beta) values run at the coarsest n");
   d.param("clamp-length", clamp, "plate length held between the fixed layers");
-  d.param("cfl", cfl, "time-step factor");
-  d.param("mu", mu, "shear modulus (Fig 4: 0.22)");
+  d.param("cfl", scheme.cfl, "time-step factor");
+  d.param("mu", scheme.mu, "shear modulus (Fig 4: 0.22)");
   d.param("Vf", Vf, "tip speed / c0 (Fig 4: 0.01)");
   d.param("periods", periods, "half the longest run, in theoretical periods (runs stop at the second crossing)");
 
@@ -33,7 +34,7 @@ int main(int argc, char** argv) {
     if (d.quick() && !d.given("n")) ns = {4, 6, 8};
     if (d.quick() && !d.given("alphas-coarse")) alphas = {2.0};
     if (ns.size() < 2) throw std::invalid_argument("need at least two resolutions");
-    const double K = 1.0;
+    const double K = 1.0, mu = scheme.mu, alpha = scheme.alpha;
     const double T_theory = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), 2.0, 20.0, 1.0);
     auto table = d.csv("runs.csv", {"n", "alpha", "particles", "dt", "steps", "wall_s", "T_sph", "amp_first", "amp_second",
                                     "decay_per_period", "T_over_theory"});
@@ -48,9 +49,8 @@ int main(int argc, char** argv) {
       s.plate.dp = 2.0 / run.n;
       s.plate.clamp_length = clamp;
       s.plate.Vf = Vf;
-      s.mu = mu;
-      s.cfl = cfl;
-      s.alpha = s.beta = run.alpha;
+      s.scheme = scheme;
+      s.scheme.alpha = s.scheme.beta = run.alpha;
       s.t_end = 2.0 * periods * T_theory;  // an upper bound: the run stops at the second crossing
       s.stop_after_crossings = 2;
       s.sample_dt = 0.5;

@@ -9,17 +9,19 @@
 #include "frame/driver.hpp"
 #include "core/materials.hpp"
 #include "gray2001/scenes/plate_run.hpp"
+#include "io/snapshot.hpp"
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig5_plate_large_amplitude", "G-fig5", "Gray et al. 2001 Fig 5: large-amplitude plate oscillation");
-  double dp = 0.2, clamp = 2.0, cfl = 0.25, mu = 0.22, Vf = 0.05, eps = 0.3, periods = 3.0, snapshot_every = 200.0;
+  double dp = 0.2, clamp = 2.0, Vf = 0.05, periods = 3.0, snapshot_every = 200.0;
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp): Fig 5's mu = 0.22 and eps = 0.30
   long max_steps = -1;
   d.param("dp", dp, "particle spacing");
   d.param("clamp-length", clamp, "plate length held between the fixed layers");
-  d.param("cfl", cfl, "time-step factor");
-  d.param("mu", mu, "shear modulus (Fig 5: 0.22)");
+  d.param("cfl", scheme.cfl, "time-step factor");
+  d.param("mu", scheme.mu, "shear modulus (Fig 5: 0.22)");
   d.param("Vf", Vf, "tip speed / c0 (Fig 5: 0.05)");
-  d.param("eps", eps, "artificial stress epsilon (Fig 5: 0.30)");
+  d.param("eps", scheme.eps_artificial, "artificial stress epsilon (Fig 5: 0.30)");
   d.param("periods", periods, "run length in theoretical periods (CHOSEN: 3, 'several oscillations')");
   d.param("snapshot-every", snapshot_every, "time between HDF5 snapshots");
   d.param("max-steps", max_steps, "stop after this many steps (smoke test); -1 = no limit");
@@ -27,17 +29,15 @@ int main(int argc, char** argv) {
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("dp")) dp = 0.25;
     if (d.quick() && !d.given("periods")) periods = 1.0;
-    const double K = 1.0;
+    const double K = 1.0, mu = scheme.mu;
     const double T = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), 2.0, 20.0, 1.0);
     scenes::PlateRunSpec s;
     s.plate.H = 2.0;
     s.plate.dp = dp;
     s.plate.clamp_length = clamp;
     s.plate.Vf = Vf;
-    s.mu = mu;
-    s.cfl = cfl;
-    s.eps_artificial = eps;
-    s.options.artificial_stress = eps > 0;
+    s.scheme = scheme;
+    s.options.artificial_stress = scheme.eps_artificial > 0;
     s.t_end = periods * T;
     s.max_steps = max_steps;
     s.sample_dt = 1.0;
@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
     auto on_sample = [&](const sph::GraySolver& solver, const sph::ElasticBody& body) {
       if (solver.time() + 1e-9 < next_snap) return;
       next_snap += snapshot_every;
-      snaps.write(scenes::snapshot_of(solver, body));
+      snaps.write(sph::snapshot_of(solver));
       scenes::write_frame(frames, solver, body);
     };
     const auto r = scenes::run_plate(s, on_sample, "plate large amplitude");

@@ -29,19 +29,20 @@
 #include <cmath>
 
 #include "frame/driver.hpp"
-#include "io/hdf5_snapshot.hpp"
+#include "io/snapshot.hpp"
 #include "gray2001/scenes/plate_run.hpp"
 #include "gray2001/scenes/rings_run.hpp"
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig6_7_rings", "G-fig6", "Gray et al. 2001 Figs 6-7: colliding rubber rings without and with artificial stress");
-  double dp = 0.1, mu = 0.22, speed = 0.059, gap = 0.2, cfl = 0.25, t_max = 300, after_contact = 60, frame_every = 20;
+  double dp = 0.1, speed = 0.059, gap = 0.2, t_max = 300, after_contact = 60, frame_every = 20;
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp): Sec 7.2's mu = 0.22
   bool coarse_check = true;
   d.param("dp", dp, "particle spacing (Sec 7.2: 0.1)");
-  d.param("mu", mu, "shear modulus (Sec 7.2: 0.22)");
+  d.param("mu", scheme.mu, "shear modulus (Sec 7.2: 0.22)");
   d.param("speed", speed, "speed of each ring toward the other (Sec 7.2: 0.059)");
   d.param("gap", gap, "distance between the rings' outer edges at t = 0");
-  d.param("cfl", cfl, "time-step factor");
+  d.param("cfl", scheme.cfl, "time-step factor");
   d.param("t-max", t_max, "longest run");
   d.param("after-contact", after_contact, "run time after the rings separate");
   d.param("frame-every", frame_every, "time between configuration frames (CSV and HDF5)");
@@ -56,10 +57,9 @@ int main(int argc, char** argv) {
       s.rings.dp = spacing;
       s.rings.speed = speed;
       s.rings.gap = gap;
-      s.mu = mu;
-      s.cfl = cfl;
+      s.scheme = scheme;
       s.options.artificial_stress = eps > 0;
-      s.eps_artificial = eps;
+      s.scheme.eps_artificial = eps;
       s.t_max = t_max;
       s.run_after_contact = after_contact;
       return s;
@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
       auto on_sample = [&](const sph::GraySolver& solver, const sph::ElasticBody& body) {
         if (solver.time() + 1e-9 < next_frame) return;
         next_frame += frame_every;
-        snaps.write(scenes::snapshot_of(solver, body));
+        snaps.write(sph::snapshot_of(solver));
         scenes::write_frame(frames, solver, body);
       };
       const auto r = scenes::run_rings(s, on_sample, "rings " + tag);

@@ -38,7 +38,7 @@
 #include <sstream>
 
 #include "frame/driver.hpp"
-#include "io/hdf5_snapshot.hpp"
+#include "io/snapshot.hpp"
 #include "gray2001/scenes/plate_run.hpp"
 #include "gray2001/scenes/slab.hpp"
 
@@ -62,15 +62,16 @@ const scenes::SlabSample& at_time(const std::vector<scenes::SlabSample>& trace, 
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig8_10_slab", "G-fig8", "Gray et al. 2001 Figs 8-10: slab under tension with von Mises plasticity");
-  double dp = 0.032, end_accel = 2.5e-6, band = 0.2, mu = 0.3, yield = 0.03, cfl = 0.25, t_max_eps0 = 300, t_max = 700;
+  double dp = 0.032, end_accel = 2.5e-6, band = 0.2, t_max_eps0 = 300, t_max = 700;
+  sph::GrayParameters scheme = scenes::slab_scheme();  // Sec 7.3: mu = 0.3, the yield 0.03
   double frame_every_eps0 = 20, frame_every = 50, sample_dt = 2.0;
   std::vector<double> study_dps{0.064}, runs{0.0, 0.3};
   d.param("dp", dp, "particle spacing (Sec 7.3: 0.016)");
   d.param("end-accel", end_accel, "outward acceleration of EACH end band (reading: 5e-6 is the relative one)");
   d.param("band", band, "width of the driven end bands (Sec 7.3: 0.2)");
-  d.param("mu", mu, "shear modulus (Sec 7.3: 0.3)");
-  d.param("yield", yield, "von Mises yield strength (Sec 7.3: 0.03)");
-  d.param("cfl", cfl, "time-step factor");
+  d.param("mu", scheme.mu, "shear modulus (Sec 7.3: 0.3)");
+  d.param("yield", scheme.yield_stress, "von Mises yield strength (Sec 7.3: 0.03)");
+  d.param("cfl", scheme.cfl, "time-step factor");
   d.param("t-max-eps0", t_max_eps0, "longest eps = 0 run");
   d.param("t-max", t_max, "longest eps = 0.3 run");
   d.param("frame-every-eps0", frame_every_eps0, "time between frames of the eps = 0 run");
@@ -88,11 +89,9 @@ int main(int argc, char** argv) {
       s.slab.dp = spacing;
       s.slab.band = band;
       s.slab.end_accel = end_accel;
-      s.mu = mu;
-      s.yield_stress = yield;
-      s.cfl = cfl;
+      s.scheme = scheme;
       s.options.artificial_stress = eps > 0;
-      s.eps_artificial = eps;
+      s.scheme.eps_artificial = eps;
       s.t_max = eps > 0 ? t_max : t_max_eps0;
       s.sample_dt = sample_dt;
       return s;
@@ -126,7 +125,7 @@ int main(int argc, char** argv) {
         if (!first_parted && solver.time() + 1e-9 < next_frame) return;
         parted_shown = parted_shown || smp.parted;
         if (!first_parted) next_frame += every;
-        snaps.write(scenes::snapshot_of(solver, body));
+        snaps.write(sph::snapshot_of(solver));
         scenes::write_frame(frames, solver, body);
       };
       const auto r = scenes::run_slab(spec(eps, dp), on_sample, "slab " + tag);

@@ -19,16 +19,18 @@ int main(int argc, char** argv) {
   sph::Driver d("gray2001_plate_work_precision", "G-wp", "Work-precision of the plate period");
   std::vector<int> ns{8, 12, 16, 20};
   std::vector<int> threads{omp_get_max_threads()};
-  double mu = 0.6, Vf = 0.01, cfl = 0.25;
+  double Vf = 0.01;
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp) but mu:
+  scheme.mu = 0.6;             // CHOSEN: the Table 1 row mu = 0.6, V_f = 0.01
   d.param("n", ns, "particles across H = 2 (at least four values)");
   d.param("threads", threads, "OpenMP thread counts");
-  d.param("mu", mu, "shear modulus");
+  d.param("mu", scheme.mu, "shear modulus");
   d.param("Vf", Vf, "tip speed / c0");
-  d.param("cfl", cfl, "time-step factor");
+  d.param("cfl", scheme.cfl, "time-step factor");
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("n")) ns = {4, 6, 8, 10};
     if (ns.size() < 4) throw std::invalid_argument("a work-precision study needs at least four resolutions");
-    const double K = 1.0;
+    const double K = 1.0, mu = scheme.mu;
     const double T_th = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), 2.0, 20.0, 1.0);
     struct Run { int n, threads; double T, wall; long steps; std::size_t particles; };
     std::vector<Run> runs;
@@ -38,8 +40,7 @@ int main(int argc, char** argv) {
         scenes::PlateRunSpec s;
         s.plate.dp = 2.0 / n;
         s.plate.Vf = Vf;
-        s.mu = mu;
-        s.cfl = cfl;
+        s.scheme = scheme;
         s.t_end = 2.0 * T_th;  // an upper bound: the run stops at the second crossing
         s.stop_after_crossings = 2;
         s.sample_dt = 0.5;

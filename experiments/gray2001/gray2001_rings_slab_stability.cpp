@@ -41,9 +41,9 @@ int main(int argc, char** argv) {
         scenes::RingsRunSpec rs;
         rs.rings.dp = rings_dp;
         rs.rings.gap = std::max(0.2, 2.0 * rings_dp);
-        rs.cfl = cfl;
+        rs.scheme.cfl = cfl;
         rs.options.artificial_stress = eps > 0;
-        rs.eps_artificial = eps;
+        rs.scheme.eps_artificial = eps;
         rs.t_max = rings_time;
         rs.run_after_contact = -1;
         const auto r = scenes::run_rings(rs, {}, "rings cfl sweep");
@@ -57,9 +57,9 @@ int main(int argc, char** argv) {
       for (const double cfl : cfls) {
         scenes::SlabRunSpec ss;
         ss.slab.dp = slab_dp;
-        ss.cfl = cfl;
+        ss.scheme.cfl = cfl;
         ss.options.artificial_stress = eps > 0;
-        ss.eps_artificial = eps;
+        ss.scheme.eps_artificial = eps;
         ss.t_max = slab_time;
         ss.run_after_fracture = 0;
         const auto r = scenes::run_slab(ss, {}, "slab cfl sweep");

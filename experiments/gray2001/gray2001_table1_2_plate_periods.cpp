@@ -54,16 +54,17 @@ std::string theory_key(double H, double mu) {
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_table1_2_plate_periods", "G-tab1", "Gray et al. 2001 Tables 1-2: oscillating plate periods");
-  double dp = 0.1, clamp = 2.0, cfl = 0.25, alpha = 1.0, beta = 1.0, periods = 2.0, paper_dp = 0.1;
+  double dp = 0.1, clamp = 2.0, periods = 2.0, paper_dp = 0.1;
+  sph::GrayParameters scheme;  // cfl, alpha, beta: the scheme's defaults (parameters.hpp)
   int table = 0;
   long max_steps = -1;
   int crossings = 1;
   d.param("crossings", crossings, "stop each run at this zero crossing of the tip (2: one period; 1: half, T = 2 t_1)");
   d.param("dp", dp, "particle spacing (H/dp must be an integer)");
   d.param("clamp-length", clamp, "plate length held between the fixed layers");
-  d.param("cfl", cfl, "time-step factor: dt = cfl h / (c_L + V_f)");
-  d.param("alpha", alpha, "artificial viscosity alpha");
-  d.param("beta", beta, "artificial viscosity beta");
+  d.param("cfl", scheme.cfl, "time-step factor: dt = cfl h / (c_L + V_f)");
+  d.param("alpha", scheme.alpha, "artificial viscosity alpha");
+  d.param("beta", scheme.beta, "artificial viscosity beta");
   d.param("periods", periods, "longest run in theoretical periods (each run stops at its second zero crossing)");
   d.param("table", table, "1 or 2 for one table only, 0 for both");
   d.param("paper-dp", paper_dp, "the spacing of the paper's runs, used only by the theory reading H - dp");
@@ -112,10 +113,8 @@ int main(int argc, char** argv) {
       s.plate.dp = dp;
       s.plate.clamp_length = clamp;
       s.plate.Vf = row.Vf;
-      s.mu = row.mu;
-      s.cfl = cfl;
-      s.alpha = alpha;
-      s.beta = beta;
+      s.scheme = scheme;
+      s.scheme.mu = row.mu;
       s.t_end = periods * T_thin;
       s.stop_after_crossings = crossings;
       s.max_steps = max_steps;

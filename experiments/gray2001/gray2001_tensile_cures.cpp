@@ -27,8 +27,8 @@ namespace {
 struct Variant { const char* name; bool artificial_stress; bool xsph; };
 const Variant kVariants[] = {{"none", false, false}, {"artstress", true, false}, {"xsph", false, true}, {"both", true, true}};
 
-sph::GrayOptions options_of(const Variant& v) {
-  sph::GrayOptions o;
+// The scene's terms with the cures of the variant (the slab keeps its von Mises return).
+sph::GrayOptions with_cures(sph::GrayOptions o, const Variant& v) {
   o.artificial_stress = v.artificial_stress;
   o.xsph = v.xsph;
   return o;
@@ -38,7 +38,8 @@ sph::GrayOptions options_of(const Variant& v) {
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_tensile_cures", "X", "Cures for the tensile instability on the plate, rings and slab");
-  double plate_dp = 0.25, rings_dp = 0.2, slab_dp = 0.064, slab_t_max = 800, cfl = 0.25;
+  double plate_dp = 0.25, rings_dp = 0.2, slab_dp = 0.064, slab_t_max = 800;
+  double cfl = sph::GrayParameters{}.cfl;  // the scheme's default
   d.param("plate-dp", plate_dp, "plate particle spacing (Figs 2-3 at 0.2 in G-fig2)");
   d.param("rings-dp", rings_dp, "rings particle spacing (paper 0.1)");
   d.param("slab-dp", slab_dp, "slab particle spacing (paper 0.016)");
@@ -66,9 +67,9 @@ int main(int argc, char** argv) {
       ps.plate.dp = plate_dp;
       ps.plate.clamp_length = 2.0;
       ps.plate.Vf = 0.05;
-      ps.mu = mu_plate;
-      ps.cfl = cfl;
-      ps.options = options_of(v);
+      ps.scheme.mu = mu_plate;
+      ps.scheme.cfl = cfl;
+      ps.options = with_cures(ps.options, v);
       ps.t_end = 1.5 * T_theory;
       ps.stop_after_crossings = 1;
       ps.fracture_check_dt = 5.0;
@@ -80,16 +81,16 @@ int main(int argc, char** argv) {
       scenes::RingsRunSpec rs;
       rs.rings.dp = rings_dp;
       rs.rings.gap = std::max(0.2, 2.0 * rings_dp);  // closest particles gap + 2 dp apart: outside 2h = 3 dp
-      rs.cfl = cfl;
-      rs.options = options_of(v);
+      rs.scheme.cfl = cfl;
+      rs.options = with_cures(rs.options, v);
       rs.t_max = 300;
       rs.run_after_contact = 20;
       const auto rr = scenes::run_rings(rs, {}, "cures rings " + name);
       // Slab.
       scenes::SlabRunSpec ss;
       ss.slab.dp = slab_dp;
-      ss.cfl = cfl;
-      ss.options = options_of(v);
+      ss.scheme.cfl = cfl;
+      ss.options = with_cures(ss.options, v);
       ss.t_max = slab_t_max;
       const auto sr = scenes::run_slab(ss, {}, "cures slab " + name);
       table.row(name, v.artificial_stress ? 1 : 0, v.xsph ? 1 : 0, T, T / T_theory - 1, plate_broken ? 1 : 0, pr.fracture_time,

@@ -12,6 +12,7 @@
 
 #include "frame/driver.hpp"
 #include "core/lattices.hpp"
+#include "core/run_loop.hpp"
 #include "spam/spam_solver.hpp"
 
 using namespace sph;
@@ -52,16 +53,19 @@ int main(int argc, char** argv) {
       const long steps = std::lround(t_end / dt);
       double st = 0, sk = 0, stt = 0, stk = 0, kmax = K0;
       long m = 0;
-      for (long s = 0; s <= steps; ++s) {
-        if (s > 0) sim->step(dt);
+      auto observe = [&](const SpamSolver& sv) {
+        const long s = sv.steps();
         double K = 0;
-        for (const Vec2& v : sim->state().v) K += 0.5 * v.squaredNorm();
+        for (const Vec2& v : sv.state().v) K += 0.5 * v.squaredNorm();
         if (!std::isfinite(K)) throw std::runtime_error("non-finite kinetic energy");
         kmax = std::max(kmax, K);
         const double t = s * dt;
         if (s % 2 == 0) out.row(c.name, c.stress, t, K);
         if (K > 1e2 * K0 && K < 1e12 * K0) { const double l = std::log(K); st += t; sk += l; stt += t * t; stk += t * l; ++m; }
-      }
+        return false;
+      };
+      const auto outcome = run(*sim, {dt, steps}, observe);
+      if (outcome.blew_up()) throw std::runtime_error(outcome.blow_up);
       const std::string tag = c.name + "_" + (c.stress < 0.015 ? "0.01" : "0.02");
       const double rate = m > 10 ? (m * stk - st * sk) / (m * stt - st * st) : 0.0;
       d.value("growth_rate_K_" + tag, rate, "d ln K / dt fitted where 1e2 K0 < K < 1e12 K0 (0: no such window)");

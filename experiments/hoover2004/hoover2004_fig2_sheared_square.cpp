@@ -10,8 +10,9 @@
 
 #include "frame/driver.hpp"
 #include "core/lattices.hpp"
-#include "spam/molecular_dynamics.hpp"
 #include "core/diagnostics.hpp"
+#include "core/run_loop.hpp"
+#include "spam/molecular_dynamics.hpp"
 #include "spam/spam_solver.hpp"
 
 using namespace sph;
@@ -44,33 +45,36 @@ int main(int argc, char** argv) {
     for (Vec2& p : xs) p.x() += shear * p.y();
     auto out = d.csv("series.csv", {"variant", "t", "L", "K", "L_over_sqrt2KI", "symmetry_error", "xy_moment"});
     auto snaps = d.csv("snapshots.csv", {"variant", "t", "i", "x", "y"});
-    auto record = [&](const std::string& name, auto&& step, auto&& pos, auto&& vel) {
+    // The same measurements of MD and of SPAM: any solver of the contract of core/run_loop.hpp.
+    auto record = [&](const std::string& name, auto& solver) {
+      using Solver = std::decay_t<decltype(solver)>;
       const long steps = std::lround(t_end / dt);
       double lmax = 0, sym = 0, lrel = 0, scale = 0;
-      for (long s = 0; s <= steps; ++s) {
-        if (s > 0) step();
-        const auto b = body_moments(pos(), vel(), 1.0);
+      auto observe = [&](const Solver& sv) {
+        const long s = sv.steps();
+        const auto b = centre_of_mass_frame(sv);
         double e = 0, xy = 0;
         for (std::size_t i = 0; i < x0.size(); ++i) {
-          e = std::max(e, (pos()[i] - b.centre + pos()[inv[i]] - b.centre).norm());
-          xy += (pos()[i] - b.centre).x() * (pos()[i] - b.centre).y();
+          e = std::max(e, (sv.position(i) - b.centre + sv.position(inv[i]) - b.centre).norm());
+          xy += (sv.position(i) - b.centre).x() * (sv.position(i) - b.centre).y();
         }
         sym = std::max(sym, e);
         lmax = std::max(lmax, std::abs(b.angular_momentum));
         scale = std::max(scale, std::sqrt(2 * b.kinetic * b.inertia));
         if (s % 10 == 0) out.row(name, s * dt, b.angular_momentum, b.kinetic, scale > 0 ? b.angular_momentum / scale : 0.0, e, xy / x0.size());
-        if (s == 0 || s == steps / 2 || s == steps) for (std::size_t i = 0; i < x0.size(); ++i) snaps.row(name, s * dt, double(i), pos()[i].x(), pos()[i].y());
-      }
+        if (s == 0 || s == steps / 2 || s == steps)
+          for (std::size_t i = 0; i < x0.size(); ++i) snaps.row(name, s * dt, double(i), sv.position(i).x(), sv.position(i).y());
+        return false;
+      };
+      const auto outcome = run(solver, {dt, steps}, observe);
+      if (outcome.blew_up()) throw std::runtime_error(name + ": " + outcome.blow_up);
       lrel = lmax / scale;
       d.value("max_L_relative_" + name, lrel, "max |L| / max sqrt(2 K I) over the run");
       d.value("symmetry_error_" + name, sym, "max |r_i + r_inv(i)| about the centre of mass");
     };
     {
-      MolecularDynamics md(x0, MdParams{});
-      MdState y{xs, std::vector<Vec2>(xs.size(), Vec2::Zero())};
-      double t = 0;
-      record("md", [&] { md.step(y, t, dt); t += dt; }, [&]() -> const std::vector<Vec2>& { return y.x; },
-             [&]() -> const std::vector<Vec2>& { return y.v; });
+      MdSolver md(x0, MdState{xs, std::vector<Vec2>(xs.size(), Vec2::Zero())}, MdParams{});
+      record("md", md);
     }
     for (auto torque : {SpamTorque::None, SpamTorque::PairScaling}) {
       SpamParams p;
@@ -82,9 +86,7 @@ int main(int argc, char** argv) {
       SpamOptions o;
       o.torque = torque;
       auto sim = make_spam(o, p, y);
-      record(torque == SpamTorque::None ? "spam" : "spam_pair_torque", [&] { sim->step(dt); },
-             [&]() -> const std::vector<Vec2>& { return sim->state().x; },
-             [&]() -> const std::vector<Vec2>& { return sim->state().v; });
+      record(torque == SpamTorque::None ? "spam" : "spam_pair_torque", *sim);
     }
   });
 }

@@ -13,6 +13,7 @@
 
 #include "frame/driver.hpp"
 #include "core/lattices.hpp"
+#include "core/run_loop.hpp"
 #include "spam/spam_solver.hpp"
 
 using namespace sph;
@@ -76,15 +77,19 @@ WaveResult run_wave(Driver& d, CsvWriter& out, const std::string& kind, int n, d
   energies(K, U);
   const double E0 = K + U;
   out.row(kind, 0.0, a_prev, K, U);
-  for (long s = 1; s <= steps; ++s) {
-    sim->step(dt);
+  auto observe = [&](const SpamSolver& sv) {
+    const long s = sv.steps();
+    if (s == 0) return false;  // the start is recorded above
     const double a = amplitude(), t = s * dt;
     if ((a > 0) != (a_prev > 0)) crossings.push_back(t - dt * a / (a - a_prev));  // linear interpolation
     a_prev = a;
     energies(K, U);
     drift = std::max(drift, std::abs(K + U - E0) / E0);
     if (s % 4 == 0) out.row(kind, t, a, K, U);
-  }
+    return false;
+  };
+  const auto outcome = run(*sim, {dt, steps}, observe);
+  if (outcome.blew_up()) throw std::runtime_error(kind + " wave: " + outcome.blow_up);
   r.energy_drift = drift;
   // crossings at T/4, 3T/4, ...: least-squares slope of t_j against j is T/2.
   const std::size_t m = std::min<std::size_t>(crossings.size(), static_cast<std::size_t>(2 * periods));

@@ -1,39 +1,88 @@
-// Whole-body diagnostics of a particle system with equal masses m, shared by SPAM and the molecular
-// dynamics reference (Hoover, Hoover & Merritt 2004, Sec. I): centre of mass, linear and angular momentum
-// L = sum m (x v_y - y v_x) about the centre of mass, kinetic energy, moment of inertia, and the shape
-// error of a body against a reference configuration after removing the best rigid rotation.
+// Whole-body diagnostics of any particle set, with one convention for the whole library:
+//   kinetic_energy(p)     sum m |v|^2 / 2, lab frame
+//   linear_momentum(p)    sum m v
+//   angular_momentum(p)   sum m (x v_y - y v_x): about the ORIGIN, lab-frame velocities
+// and, by name, the centre-of-mass forms for bodies whose centre moves (Hoover's rotating hexagon):
+//   centre_of_mass_frame(p)  the centre, its velocity, the angular momentum about the centre with the
+//                            velocities relative to its velocity, and the moment of inertia about it.
+// A particle set p offers size(), mass(i), position(i) and velocity(i): every solver does (and
+// ParticleArrays below wraps plain arrays). Each solver's own energies (elastic, internal, potential) live
+// with its formulation.
+// shape_fit: the best rigid rotation of a reference configuration onto a body and the rms distance left.
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
-#include "core/lattices.hpp"
+#include "core/types.hpp"
 
 namespace sph {
 
-struct BodyMoments {
-  Vec2 centre = Vec2::Zero();     // centre of mass
-  Vec2 momentum = Vec2::Zero();   // sum m v
-  double angular_momentum = 0;    // about the centre of mass, velocities relative to its velocity
-  double kinetic = 0;             // sum m v^2 / 2 (lab frame)
-  double inertia = 0;             // sum m |r - centre|^2
+template <class P>
+double kinetic_energy(const P& p) {
+  double e = 0;
+  for (std::size_t a = 0; a < p.size(); ++a) e += 0.5 * p.mass(a) * p.velocity(a).squaredNorm();
+  return e;
+}
+
+template <class P>
+Vec2 linear_momentum(const P& p) {
+  Vec2 s = Vec2::Zero();
+  for (std::size_t a = 0; a < p.size(); ++a) s += p.mass(a) * p.velocity(a);
+  return s;
+}
+
+template <class P>
+double angular_momentum(const P& p) {
+  double L = 0;
+  for (std::size_t a = 0; a < p.size(); ++a) {
+    const Vec2 x = p.position(a), v = p.velocity(a);
+    L += p.mass(a) * (x.x() * v.y() - x.y() * v.x());
+  }
+  return L;
+}
+
+struct CentreOfMassFrame {
+  Vec2 centre = Vec2::Zero();    ///< sum m x / sum m
+  Vec2 velocity = Vec2::Zero();  ///< sum m v / sum m
+  double angular_momentum = 0;   ///< sum m (r x u), r = x - centre, u = v - velocity
+  double inertia = 0;            ///< sum m |r|^2
+  double kinetic = 0;            ///< sum m |v|^2 / 2 (lab frame, as kinetic_energy)
 };
 
-inline BodyMoments body_moments(const std::vector<Vec2>& x, const std::vector<Vec2>& v, double m) {
-  BodyMoments b;
-  const double n = static_cast<double>(x.size());
-  Vec2 vc = Vec2::Zero();
-  for (std::size_t i = 0; i < x.size(); ++i) { b.centre += x[i]; vc += v[i]; b.kinetic += 0.5 * m * v[i].squaredNorm(); }
-  b.centre /= n;
-  b.momentum = m * vc;
-  vc /= n;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const Vec2 r = x[i] - b.centre, u = v[i] - vc;
-    b.angular_momentum += m * (r.x() * u.y() - r.y() * u.x());
-    b.inertia += m * r.squaredNorm();
+template <class P>
+CentreOfMassFrame centre_of_mass_frame(const P& p) {
+  CentreOfMassFrame f;
+  double M = 0;
+  for (std::size_t a = 0; a < p.size(); ++a) {
+    const double m = p.mass(a);
+    const Vec2 v = p.velocity(a);
+    M += m;
+    f.centre += m * p.position(a);
+    f.velocity += m * v;
+    f.kinetic += 0.5 * m * v.squaredNorm();
   }
-  return b;
+  f.centre /= M;
+  f.velocity /= M;
+  for (std::size_t a = 0; a < p.size(); ++a) {
+    const Vec2 r = p.position(a) - f.centre, u = p.velocity(a) - f.velocity;
+    f.angular_momentum += p.mass(a) * (r.x() * u.y() - r.y() * u.x());
+    f.inertia += p.mass(a) * r.squaredNorm();
+  }
+  return f;
 }
+
+/// Plain arrays as a particle set (equal masses m).
+struct ParticleArrays {
+  const std::vector<Vec2>& x;
+  const std::vector<Vec2>& v;
+  double m = 1.0;
+  std::size_t size() const { return x.size(); }
+  double mass(std::size_t) const { return m; }
+  const Vec2& position(std::size_t a) const { return x[a]; }
+  const Vec2& velocity(std::size_t a) const { return v[a]; }
+};
 
 /// Best rigid rotation angle theta of `ref` (about its centroid) onto `x` (about its centroid), and the rms
 /// distance left: the shape error, blind to how far the body has turned. 2D Procrustes:

@@ -5,13 +5,12 @@
 // row shifted by dp/2, nearest-neighbour distance dp. All positions are 2D Eigen vectors.
 #pragma once
 
-#include <Eigen/Core>
 #include <string>
 #include <vector>
 
-namespace sph {
+#include "core/types.hpp"
 
-using Vec2 = Eigen::Vector2d;
+namespace sph {
 
 enum class LatticeKind { Square, FaceCentred, Triangular };
 LatticeKind lattice_kind_from_string(const std::string& name);  // square, face_centred, triangular

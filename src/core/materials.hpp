@@ -18,16 +18,12 @@
 // the caller must detect (an exception inside an OpenMP loop would abort the process).
 #pragma once
 
-#include <Eigen/Core>
 #include <Eigen/LU>
 #include <cmath>
 
-namespace sph {
+#include "core/types.hpp"
 
-template <int D>
-using Tensor = Eigen::Matrix<double, D, D>;
-using Tensor2 = Tensor<2>;
-using Tensor3 = Tensor<3>;
+namespace sph {
 
 // =====================================================================================================
 // 1. Elastic constants

@@ -1,18 +1,22 @@
-// Neighbour pairs in compressed-row form with the kernel values cached per pair (a Verlet list).
+// Neighbour pairs in compressed-row form with their geometry cached per pair (a Verlet list): the pair
+// storage of every formulation that searches neighbours in the current configuration (Gray's scheme, SPAM).
 //
-// Candidates are collected from the cell list within the kernel support plus a skin, and only
-// re-collected when some particle has moved more than half the skin since the last collection (two
-// particles then cannot have come within the support unseen). Every step only refreshes the cached
-// geometry (x_a - x_b, W, F) of the candidates; pairs outside the support get W = F = 0. Every pass of
-// the force evaluations at the same positions reads the cache, so the kernel is evaluated once per pair
-// per step. Each pair appears twice (a->b and b->a): passes gather into their own particle only, which
-// parallelises over particles without atomics. No allocation once the arrays have reached their size.
+// Candidates are collected from the cell list within the search radius (the kernel support) plus a skin,
+// and only re-collected when some particle has moved more than half the skin since the last collection
+// (two particles then cannot have come within the support unseen); with skin 0 they are re-collected
+// whenever anything moved. Every update refreshes the cached geometry of the candidates: x_a - x_b, W and
+// F (grad_a W_ab = (x_a - x_b) F_ab), computed by the formulation's `geometry(r, W, F)`, which must give
+// W = F = 0 beyond the support. Every pass of an evaluation reads the cache, so the kernel is evaluated
+// once per pair per update. Each pair appears twice (a->b and b->a): passes gather into their own particle
+// only, which parallelises over particles without atomics. No allocation once the arrays have reached
+// their size.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "core/neighbours.hpp"
+#include "core/parallel.hpp"
 
 namespace sph {
 
@@ -26,45 +30,46 @@ struct PairList {
 
   std::size_t pairs() const { return b.size(); }
 
-  /// Brings the list up to date for positions x. `cells` must have been constructed with a radius of
-  /// at least support * h + skin; it is rebuilt here when the candidates are re-collected.
-  template <class Kernel>
-  void update(CellList2D& cells, const std::vector<Vec2>& x, const Kernel& kernel, double h, double skin) {
+  /// Brings the list up to date for positions x. `cells` must have been constructed with a radius of at
+  /// least support_radius + skin; it is rebuilt here when the candidates are re-collected.
+  template <class Geometry>
+  void update(CellList2D& cells, const std::vector<Vec2>& x, double support_radius, double skin, Geometry&& geometry) {
     if (must_collect(x, skin)) {
       cells.build(x);
-      collect(cells, x, kernel.support() * h + skin);
+      collect(cells, x, support_radius + skin);
     }
-    refresh(cells, x, kernel, h);
+    refresh(cells, x, geometry);
   }
 
  private:
   bool must_collect(const std::vector<Vec2>& x, double skin) const {
     if (x_collected_.size() != x.size()) return true;
     const double limit2 = 0.25 * skin * skin;
+    const long n = static_cast<long>(x.size());
     bool moved = false;
-#pragma omp parallel for reduction(|| : moved) schedule(static)
-    for (std::size_t a = 0; a < x.size(); ++a) moved = moved || (x[a] - x_collected_[a]).squaredNorm() > limit2;
+#pragma omp parallel for reduction(|| : moved) schedule(static) if (n >= kParallelMin)
+    for (long a = 0; a < n; ++a) moved = moved || (x[a] - x_collected_[a]).squaredNorm() > limit2;
     return moved;
   }
 
   void collect(const CellList2D& cells, const std::vector<Vec2>& x, double radius) {
-    const std::size_t n = x.size();
+    const long n = static_cast<long>(x.size());
     start.resize(n + 1);
     start[0] = 0;
-#pragma omp parallel for schedule(static)
-    for (std::size_t a = 0; a < n; ++a) {
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+    for (long a = 0; a < n; ++a) {
       std::uint32_t count = 0;
       cells.for_each_neighbour(x, a, radius, [&](std::size_t, const Vec2&, double) { ++count; });
       start[a + 1] = count;
     }
-    for (std::size_t a = 0; a < n; ++a) start[a + 1] += start[a];
+    for (long a = 0; a < n; ++a) start[a + 1] += start[a];
     const std::size_t total = start[n];
     b.resize(total);
     dx.resize(total);
     W.resize(total);
     F.resize(total);
-#pragma omp parallel for schedule(static)
-    for (std::size_t a = 0; a < n; ++a) {
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+    for (long a = 0; a < n; ++a) {
       std::uint32_t k = start[a];
       cells.for_each_neighbour(x, a, radius, [&](std::size_t j, const Vec2&, double) { b[k++] = static_cast<std::uint32_t>(j); });
     }
@@ -72,16 +77,16 @@ struct PairList {
     ++collections;
   }
 
-  template <class Kernel>
-  void refresh(const CellList2D& cells, const std::vector<Vec2>& x, const Kernel& kernel, double h) {
-    const std::size_t n = x.size();
-#pragma omp parallel for schedule(static)
-    for (std::size_t a = 0; a < n; ++a)
+  template <class Geometry>
+  void refresh(const CellList2D& cells, const std::vector<Vec2>& x, Geometry& geometry) {
+    const long n = static_cast<long>(x.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+    for (long a = 0; a < n; ++a)
       for (std::uint32_t k = start[a]; k < start[a + 1]; ++k) {
         const Vec2 d = cells.displacement(x[a], x[b[k]]);
         const double r = d.norm();
         dx[k] = d;
-        kernel.W_and_F(r, h, W[k], F[k]);  // both vanish beyond the support
+        geometry(r, W[k], F[k]);  // both vanish beyond the support
       }
   }
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/lattices.hpp"
+#include "core/types.hpp"
 #include "io/run_info.hpp"
 
 namespace sph {

@@ -34,17 +34,15 @@ void spam_scale_torques(std::size_t n_particles, SpamWork& wk) {
   const long n = static_cast<long>(n_particles);
   double pos = 0, neg = 0;
   if constexpr (P::torque == SpamTorque::PairScaling) {
-#pragma omp parallel for schedule(static) if (n >= kSpamParallelMin) reduction(+ : pos, neg)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin) reduction(+ : pos, neg)
     for (long i = 0; i < n; ++i) {
-      const std::size_t b = static_cast<std::size_t>(i) * wk.slots, c = wk.count[i];
-      for (std::size_t k = b; k < b + c; ++k) (wk.tau[k] > 0 ? pos : neg) += std::abs(wk.tau[k]);
+      for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) (wk.tau[k] > 0 ? pos : neg) += std::abs(wk.tau[k]);
     }
   } else {
-#pragma omp parallel for schedule(static) if (n >= kSpamParallelMin) reduction(+ : pos, neg)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin) reduction(+ : pos, neg)
     for (long i = 0; i < n; ++i) {
-      const std::size_t b = static_cast<std::size_t>(i) * wk.slots, c = wk.count[i];
       double s = 0;
-      for (std::size_t k = b; k < b + c; ++k) s += wk.tau[k];
+      for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) s += wk.tau[k];
       wk.ldot[i] = 0.5 * s;
       (wk.ldot[i] > 0 ? pos : neg) += std::abs(wk.ldot[i]);
     }
@@ -53,14 +51,13 @@ void spam_scale_torques(std::size_t n_particles, SpamWork& wk) {
   wk.torque_ratio = R; wk.torque_positive = pos; wk.torque_negative = neg;
   if constexpr (P::torque == SpamTorque::ParticleScaling)
     for (long i = 0; i < n; ++i) wk.scale[i] = torque_factor(wk.ldot[i], R);
-#pragma omp parallel for schedule(static) if (n >= kSpamParallelMin)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (long i = 0; i < n; ++i) {
-    const std::size_t b = static_cast<std::size_t>(i) * wk.slots, c = wk.count[i];
-    for (std::size_t k = b; k < b + c; ++k) {
+    for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
       double s;
       if constexpr (P::torque == SpamTorque::PairScaling) s = torque_factor(wk.tau[k], R);
-      else s = 0.5 * (wk.scale[i] + wk.scale[wk.nb[k]]);
-      const Vec2& d = wk.d[k];
+      else s = 0.5 * (wk.scale[i] + wk.scale[wk.pairs.b[k]]);
+      const Vec2& d = wk.pairs.dx[k];
       const Vec2 radial = (wk.f[k].dot(d) / d.squaredNorm()) * d;
       wk.f[k] = radial + s * (wk.f[k] - radial);
     }

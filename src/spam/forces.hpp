@@ -17,7 +17,7 @@ template <class P>
 void spam_forces(const SpamState& y, SpamWork& wk, SpamState& dy) {
   const long n = static_cast<long>(y.size());
   const double m = wk.params.mass;
-#pragma omp parallel for schedule(static) if (n >= kSpamParallelMin)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (long i = 0; i < n; ++i) {
     const double r2 = wk.rho[i] * wk.rho[i];
     double p = 0;
@@ -25,33 +25,31 @@ void spam_forces(const SpamState& y, SpamWork& wk, SpamState& dy) {
     wk.txx[i] = (y.sxx[i] - p) / r2; wk.tyy[i] = (y.syy[i] - p) / r2; wk.txy[i] = y.sxy[i] / r2;
   }
   auto pair_force = [&](long i, std::size_t k) {
-    const std::size_t j = wk.nb[k];
+    const std::size_t j = wk.pairs.b[k];
     const double sxx = wk.txx[i] + wk.txx[j], syy = wk.tyy[i] + wk.tyy[j], sxy = wk.txy[i] + wk.txy[j];
-    const Vec2 g = wk.F[k] * wk.d[k];
+    const Vec2 g = wk.pairs.F[k] * wk.pairs.dx[k];
     return Vec2(m * (sxx * g.x() + sxy * g.y()), m * (sxy * g.x() + syy * g.y()));
   };
   if constexpr (P::torque_scaling) {
-#pragma omp parallel for schedule(static) if (n >= kSpamParallelMin)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long i = 0; i < n; ++i) {
-      const std::size_t b = static_cast<std::size_t>(i) * wk.slots, c = wk.count[i];
-      for (std::size_t k = b; k < b + c; ++k) {
+      for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
         wk.f[k] = pair_force(i, k);
-        wk.tau[k] = m * (wk.d[k].x() * wk.f[k].y() - wk.d[k].y() * wk.f[k].x());
+        wk.tau[k] = m * (wk.pairs.dx[k].x() * wk.f[k].y() - wk.pairs.dx[k].y() * wk.f[k].x());
       }
     }
     spam_scale_torques<P>(y.size(), wk);
   }
-#pragma omp parallel for schedule(static) if (n >= kSpamParallelMin)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (long i = 0; i < n; ++i) {
-    const std::size_t b = static_cast<std::size_t>(i) * wk.slots, c = wk.count[i];
     Vec2 a = Vec2::Zero();
     double edot = 0;
-    for (std::size_t k = b; k < b + c; ++k) {
+    for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
       Vec2 f;
       if constexpr (P::torque_scaling) f = wk.f[k];
       else f = pair_force(i, k);
       a += f;
-      edot -= 0.5 * (y.v[i] - y.v[wk.nb[k]]).dot(f);
+      edot -= 0.5 * (y.v[i] - y.v[wk.pairs.b[k]]).dot(f);
     }
     dy.v[i] = a;
     dy.e[i] = edot;

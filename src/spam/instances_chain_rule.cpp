@@ -3,7 +3,7 @@
 
 namespace sph {
 
-std::unique_ptr<SpamSimulation> make_spam_chain_rule(const SpamOptions& o, const SpamParams& p, const SpamState& y0) {
+std::unique_ptr<SpamSolver> make_spam_chain_rule(const SpamOptions& o, const SpamParams& p, const SpamState& y0) {
   return spam_detail::with_advection<SpamDensity::Continuity, true>(o, p, y0);
 }
 

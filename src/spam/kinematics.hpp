@@ -23,12 +23,11 @@ void spam_density(const SpamState& y, SpamWork& wk) {
   const long n = static_cast<long>(y.size());
   const double m = wk.params.mass;
   constexpr bool need_sum = P::density == SpamDensity::Summation || P::advection == SpamAdvection::Shepard;
-#pragma omp parallel for schedule(static) if (n >= kSpamParallelMin)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (long i = 0; i < n; ++i) {
     if constexpr (need_sum) {
-      const std::size_t b = static_cast<std::size_t>(i) * wk.slots, c = wk.count[i];
       double s = wk.w0;
-      for (std::size_t k = b; k < b + c; ++k) s += wk.w[k];
+      for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) s += wk.pairs.W[k];
       wk.sumw[i] = s;
       if constexpr (P::density == SpamDensity::Summation) wk.rho[i] = m * s;
     }
@@ -48,18 +47,17 @@ void spam_advection(const SpamState& y, SpamWork& wk) {
   if constexpr (P::averaged) {
     const long n = static_cast<long>(y.size());
     const double m = wk.params.mass;
-#pragma omp parallel for schedule(static) if (n >= kSpamParallelMin)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long i = 0; i < n; ++i) {
-      const std::size_t b = static_cast<std::size_t>(i) * wk.slots, c = wk.count[i];
       if constexpr (P::advection == SpamAdvection::Shepard) {
         Vec2 s = wk.w0 * y.v[i];
-        for (std::size_t k = b; k < b + c; ++k) s += wk.w[k] * y.v[wk.nb[k]];
+        for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) s += wk.pairs.W[k] * y.v[wk.pairs.b[k]];
         wk.u[i] = s / wk.sumw[i];
       } else {
         Vec2 s = Vec2::Zero();
-        for (std::size_t k = b; k < b + c; ++k) {
-          const std::size_t j = wk.nb[k];
-          s += (wk.w[k] / pair_density<P::advection>(wk.rho[i], wk.rho[j])) * (y.v[j] - y.v[i]);
+        for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
+          const std::size_t j = wk.pairs.b[k];
+          s += (wk.pairs.W[k] / pair_density<P::advection>(wk.rho[i], wk.rho[j])) * (y.v[j] - y.v[i]);
         }
         wk.u[i] = y.v[i] + m * s;
       }
@@ -73,14 +71,13 @@ void spam_kinematics_rates(const SpamState& y, SpamWork& wk, SpamState& dy) {
   const long n = static_cast<long>(y.size());
   const double m = wk.params.mass;
   const std::vector<Vec2>& c = P::chain_rule ? wk.u : y.v;
-#pragma omp parallel for schedule(static) if (n >= kSpamParallelMin)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (long i = 0; i < n; ++i) {
     if constexpr (P::averaged) dy.x[i] = wk.u[i];
     else dy.x[i] = y.v[i];
     if constexpr (P::density == SpamDensity::Continuity) {
-      const std::size_t b = static_cast<std::size_t>(i) * wk.slots, cnt = wk.count[i];
       double s = 0;
-      for (std::size_t k = b; k < b + cnt; ++k) s += (c[i] - c[wk.nb[k]]).dot(wk.d[k]) * wk.F[k];
+      for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) s += (c[i] - c[wk.pairs.b[k]]).dot(wk.pairs.dx[k]) * wk.pairs.F[k];
       dy.rho[i] = m * s;
     } else {
       dy.rho[i] = 0.0;

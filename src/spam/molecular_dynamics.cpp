@@ -3,13 +3,16 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/blow_up.hpp"
 #include "core/neighbours.hpp"
 
 namespace sph {
 
-MolecularDynamics::MolecularDynamics(const std::vector<Vec2>& reference, const MdParams& p) : p_(p) {
+MdSolver::MdSolver(const std::vector<Vec2>& reference, const MdState& initial, const MdParams& p) : p_(p), y_(initial) {
   if (!(p.mass > 0) || !(p.bond_cutoff > 0) || !(p.rest_length > 0))
-    throw std::invalid_argument("MolecularDynamics: need mass, rest length and bond cutoff > 0");
+    throw std::invalid_argument("MdSolver: need mass, rest length and bond cutoff > 0");
+  if (initial.x.size() != reference.size() || initial.v.size() != reference.size())
+    throw std::invalid_argument("MdSolver: the initial state must have one position and velocity per reference particle");
   const std::size_t n = reference.size();
   Box2 box = bounding_box(reference);
   box.xmax += 1e-9 + p.bond_cutoff; box.ymax += 1e-9 + p.bond_cutoff;
@@ -27,7 +30,7 @@ MolecularDynamics::MolecularDynamics(const std::vector<Vec2>& reference, const M
   for (const auto& a : adj) partner_.insert(partner_.end(), a.begin(), a.end());
 }
 
-void MolecularDynamics::derivative(const MdState& y, MdState& dy) const {
+void MdSolver::derivative(const MdState& y, MdState& dy) const {
   const long n = static_cast<long>(y.x.size());
   const double k_over_m = p_.spring / p_.mass;
 #pragma omp parallel for schedule(static) if (n >= 1000)
@@ -43,7 +46,8 @@ void MolecularDynamics::derivative(const MdState& y, MdState& dy) const {
   }
 }
 
-double MolecularDynamics::potential_energy(const MdState& y) const {
+double MdSolver::potential_energy() const {
+  const MdState& y = y_;
   double u = 0;
   for (const auto& [i, j] : bonds_) {
     const double s = p_.rest_length - (y.x[i] - y.x[j]).norm();
@@ -52,8 +56,12 @@ double MolecularDynamics::potential_energy(const MdState& y) const {
   return u;
 }
 
-void MolecularDynamics::step(MdState& y, double t, double dt) {
-  rk_.step(y, t, dt, [this](double, const MdState& s, MdState& d) { derivative(s, d); });
+void MdSolver::step(double dt) {
+  rk_.step(y_, t_, dt, [this](double, const MdState& s, MdState& d) { derivative(s, d); });
+  t_ += dt;
+  ++steps_;
+  const std::size_t bad = first_bad_particle(y_.x.size(), [this](std::size_t i) { return !(y_.x[i].allFinite() && y_.v[i].allFinite()); });
+  if (bad < y_.x.size()) throw_blow_up(steps_, t_, bad, y_.x[bad], "non-finite position or velocity");
 }
 
 }  // namespace sph

@@ -6,23 +6,24 @@
 //
 // The springs are the nearest-neighbour BONDS of the initial, undeformed lattice (pairs closer than
 // bond_cutoff), kept for the whole run: a cutoff at the rest length would cut every stretched bond of a
-// body under tension (the rotating hexagon) and leave it without tensile strength.
+// body under tension (the rotating hexagon) and leave it without tensile strength. MdSolver offers the
+// solver contract of core/run_loop.hpp.
 #pragma once
 
 #include <cstddef>
+#include <tuple>
 #include <utility>
 #include <vector>
 
-#include "core/lattices.hpp"
 #include "core/rk4.hpp"
+#include "core/types.hpp"
 
 namespace sph {
 
 struct MdState {
   std::vector<Vec2> x, v;
-  void resize_like(const MdState& o) { x.resize(o.x.size()); v.resize(o.v.size()); }
-  void set_axpy(const MdState& a, double s, const MdState& k) { vec_set_axpy(x, a.x, s, k.x); vec_set_axpy(v, a.v, s, k.v); }
-  void axpy(double s, const MdState& k) { vec_axpy(x, s, k.x); vec_axpy(v, s, k.v); }
+  auto fields() { return std::tie(x, v); }
+  auto fields() const { return std::tie(x, v); }
 };
 
 struct MdParams {
@@ -32,24 +33,38 @@ struct MdParams {
   double bond_cutoff = 1.3;
 };
 
-class MolecularDynamics {
+class MdSolver {
  public:
-  /// Bonds are found in `reference` (the undeformed lattice); the state may start elsewhere (sheared).
-  MolecularDynamics(const std::vector<Vec2>& reference, const MdParams& p);
+  /// Bonds are found in `reference` (the undeformed lattice); the run starts from `initial` (which may be
+  /// elsewhere: sheared).
+  MdSolver(const std::vector<Vec2>& reference, const MdState& initial, const MdParams& p);
 
   /// dx/dt = v, m dv/dt = sum_bonds kappa (r0 - r) (x_i - x_j)/r. OpenMP over particles.
   void derivative(const MdState& y, MdState& dy) const;
-  double potential_energy(const MdState& y) const;
-  void step(MdState& y, double t, double dt);
+  double potential_energy() const;
+  /// One RK4 step; throws BlowUp when a position or velocity is no longer finite.
+  void step(double dt);
+  double time() const { return t_; }
+  long steps() const { return steps_; }
+  const MdState& state() const { return y_; }
 
   const std::vector<std::pair<std::size_t, std::size_t>>& bonds() const { return bonds_; }
   const MdParams& params() const { return p_; }
 
+  // The particles, as every solver offers them (diagnostics).
+  std::size_t size() const { return y_.x.size(); }
+  double mass(std::size_t) const { return p_.mass; }
+  const Vec2& position(std::size_t i) const { return y_.x[i]; }
+  const Vec2& velocity(std::size_t i) const { return y_.v[i]; }
+
  private:
   MdParams p_;
+  MdState y_;
   std::vector<std::pair<std::size_t, std::size_t>> bonds_;
   std::vector<std::size_t> start_, partner_;  // CSR: the bonded partners of each particle
   Rk4<MdState> rk_;
+  double t_ = 0;
+  long steps_ = 0;
 };
 
 }  // namespace sph

@@ -67,7 +67,6 @@ struct SpamParams {
   double viscosity_length = 1.0;           // dx = the lattice spacing
   double closest_distance = 0.7;           // CHOSEN: 70% of the lattice spacing
   double gauss_floor = 1e-12;              // Gauss multipliers off while D < floor * m R^2 (rigid rotation)
-  int max_neighbours = 128;                // per particle (about 33 at the stress-free density for h = 3)
   Box2 box;                                // cell-list box; periodic flags make a periodic crystal
 };
 

@@ -21,16 +21,15 @@ void spam_stress_rate(const SpamState& y, SpamWork& wk, SpamState& dy) {
   const long n = static_cast<long>(y.size());
   const double m = wk.params.mass, lambda = wk.params.lambda, eta = wk.params.eta;
   const double cdx = wk.params.viscosity_coefficient * wk.params.viscosity_length;
-#pragma omp parallel for schedule(static) if (n >= kSpamParallelMin)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (long i = 0; i < n; ++i) {
-    const std::size_t b = static_cast<std::size_t>(i) * wk.slots, c = wk.count[i];
     double gxx = 0, gxy = 0, gyx = 0, gyy = 0;  // g_ab = dv_a/dx_b
-    for (std::size_t k = b; k < b + c; ++k) {
-      const std::size_t j = wk.nb[k];
-      const double s = -m * wk.F[k] / (0.5 * (wk.rho[i] + wk.rho[j]));
+    for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
+      const std::size_t j = wk.pairs.b[k];
+      const double s = -m * wk.pairs.F[k] / (0.5 * (wk.rho[i] + wk.rho[j]));
       const Vec2 vij = y.v[i] - y.v[j];
-      gxx += s * vij.x() * wk.d[k].x(); gxy += s * vij.x() * wk.d[k].y();
-      gyx += s * vij.y() * wk.d[k].x(); gyy += s * vij.y() * wk.d[k].y();
+      gxx += s * vij.x() * wk.pairs.dx[k].x(); gxy += s * vij.x() * wk.pairs.dx[k].y();
+      gyx += s * vij.y() * wk.pairs.dx[k].x(); gyy += s * vij.y() * wk.pairs.dx[k].y();
     }
     const double div = gxx + gyy, omega = 0.5 * (gyx - gxy);
     dy.sxx[i] = lambda * div + 2 * eta * gxx - 2 * omega * y.sxy[i];

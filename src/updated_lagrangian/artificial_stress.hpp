@@ -11,12 +11,12 @@
 
 #include <cmath>
 
-#include <Eigen/Core>
+#include "core/types.hpp"
 
 namespace sph {
 
 /// R_a for a particle with Cauchy stress `sigma` (tension positive) and density rho, factor eps (~0.3).
-inline Eigen::Matrix2d artificial_stress(const Eigen::Matrix2d& sigma, double rho, double eps) {
+inline Tensor2 artificial_stress(const Tensor2& sigma, double rho, double eps) {
   const double sxx = sigma(0, 0), syy = sigma(1, 1), sxy = 0.5 * (sigma(0, 1) + sigma(1, 0));
   const double theta = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
   const double c = std::cos(theta), s = std::sin(theta);
@@ -24,7 +24,7 @@ inline Eigen::Matrix2d artificial_stress(const Eigen::Matrix2d& sigma, double rh
   const double s2 = s * s * sxx - 2.0 * s * c * sxy + c * c * syy;  // (6.3), sign corrected
   const double f = -eps / (rho * rho);
   const double r1 = s1 > 0 ? f * s1 : 0.0, r2 = s2 > 0 ? f * s2 : 0.0;  // (6.4)
-  Eigen::Matrix2d R;
+  Tensor2 R;
   R(0, 0) = c * c * r1 + s * s * r2;  // (6.5)
   R(1, 1) = s * s * r1 + c * c * r2;  // (6.6)
   R(0, 1) = R(1, 0) = s * c * (r1 - r2);  // (6.7)

@@ -41,7 +41,7 @@ double plate_theory_period(double E, double nu, double H, double L, double rho) 
   return 2.0 * M_PI / std::sqrt(omega2);
 }
 
-Plate make_plate(const PlateSpec& s) {
+Plate make_plate(const PlateSpec& s, const sph::GrayParameters& scheme) {
   if (!(s.dp > 0) || !(s.L > 0) || !(s.H > 0) || s.clamp_length < 0 || s.clamp_layers < 1)
     throw std::invalid_argument("plate: need dp, L, H > 0, clamp length >= 0, clamp layers >= 1");
   const double nrows = s.H / s.dp;
@@ -51,7 +51,7 @@ Plate make_plate(const PlateSpec& s) {
   if (std::abs(ncols_clamp - std::round(ncols_clamp)) > 1e-9)
     throw std::invalid_argument("plate: clamp length must be a multiple of dp");
   Plate p;
-  const double m = s.rho0 * s.dp * s.dp;
+  const double rho0 = scheme.rho0, c0 = scheme.c0, m = rho0 * s.dp * s.dp;
   const double x0 = -s.clamp_length;
   const int nx = static_cast<int>(std::lround((s.L + s.clamp_length) / s.dp));
   const int ny = static_cast<int>(std::lround(nrows));
@@ -61,9 +61,9 @@ Plate make_plate(const PlateSpec& s) {
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const sph::Vec2 x(x0 + (i + 0.5) * s.dp, (j + 0.5) * s.dp);
-      const double vy = x.x() > 0 ? s.c0 * cantilever_mode_velocity(x.x(), s.L, s.Vf) : 0.0;
+      const double vy = x.x() > 0 ? c0 * cantilever_mode_velocity(x.x(), s.L, s.Vf) : 0.0;
       const sph::Vec2 shake = s.perturbation > 0 ? sph::Vec2(jitter(rng), jitter(rng)) : sph::Vec2::Zero();
-      p.body.add(x + shake, sph::Vec2(0.0, vy), m, s.rho0);
+      p.body.add(x + shake, sph::Vec2(0.0, vy), m, rho0);
       // The tip: last column, the row nearest the mid-plane (lower of the two middle rows if ny is even).
       const double score = std::abs(i - (nx - 1)) * 1e6 + std::abs(x.y() - 0.5 * s.H + 0.25 * s.dp);
       if (score < best) { best = score; p.tip = p.body.size() - 1; }
@@ -72,13 +72,14 @@ Plate make_plate(const PlateSpec& s) {
   for (int l = 0; l < layers; ++l) {
     for (int i = -layers; i < static_cast<int>(std::lround(ncols_clamp)); ++i) {
       const double x = x0 + (i + 0.5) * s.dp;
-      p.body.add({x, -(l + 0.5) * s.dp}, {0, 0}, m, s.rho0, sph::Motion::Fixed);
-      p.body.add({x, s.H + (l + 0.5) * s.dp}, {0, 0}, m, s.rho0, sph::Motion::Fixed);
+      p.body.add({x, -(l + 0.5) * s.dp}, {0, 0}, m, rho0, sph::Motion::Fixed);
+      p.body.add({x, s.H + (l + 0.5) * s.dp}, {0, 0}, m, rho0, sph::Motion::Fixed);
     }
-    for (int j = 0; j < ny; ++j) p.body.add({x0 - (l + 0.5) * s.dp, (j + 0.5) * s.dp}, {0, 0}, m, s.rho0, sph::Motion::Fixed);
+    for (int j = 0; j < ny; ++j) p.body.add({x0 - (l + 0.5) * s.dp, (j + 0.5) * s.dp}, {0, 0}, m, rho0, sph::Motion::Fixed);
   }
   const double margin = 0.6 * s.L;  // the tip swings by ~Vf L / (kL)... well inside this at the paper's Vf
-  p.box = {x0 - (layers + 1) * s.dp, -margin, s.L + s.dp, s.H + margin, false, false};
+  p.body.dp = s.dp;
+  p.body.box = {x0 - (layers + 1) * s.dp, -margin, s.L + s.dp, s.H + margin, false, false};
   return p;
 }
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "updated_lagrangian/elastic_body.hpp"
-#include "updated_lagrangian/gray_solver.hpp"
+#include "updated_lagrangian/parameters.hpp"
 
 namespace scenes {
 
@@ -17,7 +17,6 @@ struct PlateSpec {
   double clamp_length = 2.0;   ///< length of plate held between the fixed layers (CHOSEN: see driver)
   int clamp_layers = 3;        ///< fixed layers above, below and behind: 3 dp >= the 2h = 3 dp support
   double Vf = 0.01;            ///< tip speed over c0 (7.3)
-  double c0 = 1.0, rho0 = 1.0;
   double perturbation = 0.0;   ///< random displacement of the free particles, uniform in +-perturbation*dp
   unsigned seed = 1;           ///< of the perturbation
 };
@@ -32,14 +31,14 @@ double cantilever_mode_velocity(double x, double L, double Vf);
 double plate_theory_period(double E, double nu, double H, double L, double rho);
 
 struct Plate {
-  sph::ElasticBody body;
+  sph::ElasticBody body;       ///< its box contains the plate with room for its motion
   std::size_t tip = 0;         ///< the free-end particle on the mid-plane row whose y(t) is tracked
-  sph::Box2 box;               ///< a box containing the plate with room for its motion
 };
 
 /// Builds the plate: free particles on a square lattice of spacing dp filling [-clamp_length, L] x [0, H]
 /// (centres at half-spacings, so the plate is exactly H thick), fixed layers above and below the clamped
-/// part and behind its end, and the initial velocity (7.3) on the particles with x > 0.
-Plate make_plate(const PlateSpec& s);
+/// part and behind its end, and the initial velocity (7.3) on the particles with x > 0; masses rho0 dp^2 and
+/// velocities in units of c0 from the scheme's parameters.
+Plate make_plate(const PlateSpec& s, const sph::GrayParameters& scheme);
 
 }  // namespace scenes

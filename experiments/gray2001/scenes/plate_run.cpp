@@ -2,63 +2,64 @@
 
 #include <cmath>
 
+#include "core/diagnostics.hpp"
 #include "core/fragments.hpp"
+#include "core/run_loop.hpp"
 #include "frame/progress.hpp"
-#include "gray2001/scenes/sampled_run.hpp"
 
 namespace scenes {
 
 PlateRunResult run_plate(const PlateRunSpec& s,
                          const std::function<void(const sph::GraySolver&, const sph::ElasticBody&)>& on_sample,
                          const std::string& progress_label) {
-  Plate plate = make_plate(s.plate);
-  sph::GrayParameters p = gray_parameters(s, s.plate.rho0, s.plate.dp, plate.box);
-  p.c0 = s.plate.c0;
-  sph::GraySolver solver(plate.body, p, s.options);
-  const double vmax = s.plate.Vf * s.plate.c0;
+  Plate plate = make_plate(s.plate, s.scheme);
+  sph::ElasticBody& body = plate.body;
+  sph::GraySolver solver(body, s.scheme, s.options);
   PlateRunResult r;
-  r.dt = sph::gray_time_step(p, s.cfl, vmax);
-  r.particles = plate.body.size();
-  const double y0 = plate.body.x[plate.tip].y();
-  std::vector<bool> free_particles(plate.body.size());
-  for (std::size_t a = 0; a < plate.body.size(); ++a) free_particles[a] = plate.body.motion[a] == sph::Motion::Free;
+  r.dt = solver.time_step(s.plate.Vf * s.scheme.c0);
+  r.particles = body.size();
+  const double y0 = body.x[plate.tip].y();
+  std::vector<bool> free_particles(body.size());
+  for (std::size_t a = 0; a < body.size(); ++a) free_particles[a] = body.motion[a] == sph::Motion::Free;
 
-  auto fragments = [&] {
-    return sph::find_fragments(plate.body.x, plate.box, s.fracture_link * s.plate.dp, free_particles).count;
-  };
+  auto fragments = [&] { return sph::find_fragments(body.x, body.box, s.fracture_link * s.plate.dp, free_particles).count; };
   auto sample = [&](std::size_t pieces) {
-    r.trace.push_back({solver.time(), plate.body.x[plate.tip].y() - y0, solver.kinetic_energy(), solver.elastic_energy(), pieces});
-    if (on_sample) on_sample(solver, plate.body);
+    r.trace.push_back({solver.time(), body.x[plate.tip].y() - y0, sph::kinetic_energy(solver), solver.elastic_energy(), pieces});
+    if (on_sample) on_sample(solver, body);
+  };
+  // Fracture checks every fracture_check_dt (and at t = 0), samples of the tip every sample_dt; a run stops
+  // after its crossings or a while after the first fracture, if asked.
+  sph::Cadence checks(s.fracture_check_dt), samples(s.sample_dt);
+  std::size_t pieces = 1;
+  int crossings = 0;
+  auto observe = [&](const sph::GraySolver& sv) {
+    if (sv.steps() == 0) {  // the start: the plate's pieces and the first sample
+      checks.due(0.0);
+      samples.due(0.0);
+      pieces = fragments();
+      sample(pieces);
+      return false;
+    }
+    if (checks.due(sv.time())) {
+      pieces = fragments();
+      if (pieces > 1 && r.fracture_time < 0) r.fracture_time = sv.time();
+      if (r.fracture_time >= 0 && s.run_after_fracture >= 0 && sv.time() >= r.fracture_time + s.run_after_fracture) {
+        sample(pieces);
+        return true;
+      }
+    }
+    if (samples.due(sv.time())) {
+      sample(pieces);
+      const std::size_t k = r.trace.size();
+      if (k > 2 && (r.trace[k - 1].y > 0) != (r.trace[k - 2].y > 0)) ++crossings;
+      if (s.stop_after_crossings >= 0 && crossings >= s.stop_after_crossings) return true;
+    }
+    return false;
   };
   sph::Progress progress(progress_label, s.t_end);
-  std::size_t pieces = fragments();
-  sample(pieces);
-  double next_sample = s.sample_dt, next_check = s.fracture_check_dt;
-  int crossings = 0;
-  try {
-    while (solver.time() < s.t_end - 1e-12 && (s.max_steps < 0 || solver.steps() < s.max_steps)) {
-      solver.step(std::min(r.dt, s.t_end - solver.time()));
-      if (solver.time() >= next_check - 1e-12) {
-        next_check += s.fracture_check_dt;
-        pieces = fragments();
-        if (pieces > 1 && r.fracture_time < 0) r.fracture_time = solver.time();
-        if (r.fracture_time >= 0 && s.run_after_fracture >= 0 && solver.time() >= r.fracture_time + s.run_after_fracture) {
-          sample(pieces);
-          break;
-        }
-      }
-      if (solver.time() >= next_sample - 1e-12) {
-        next_sample += s.sample_dt;
-        sample(pieces);
-        const std::size_t k = r.trace.size();
-        if (k > 2 && (r.trace[k - 1].y > 0) != (r.trace[k - 2].y > 0)) ++crossings;
-        if (s.stop_after_crossings >= 0 && crossings >= s.stop_after_crossings) break;
-      }
-      progress.update(solver.time(), solver.steps());
-    }
-  } catch (const sph::BlowUp& e) {
-    r.blow_up = e.what();
-  }
+  const auto outcome = sph::run(solver, {r.dt, s.max_steps, s.t_end}, observe,
+                                [&](const sph::GraySolver& sv) { progress.update(sv.time(), sv.steps()); });
+  r.blow_up = outcome.blow_up;
   r.steps = solver.steps();
   r.wall_s = progress.elapsed_s();
   return r;
@@ -72,17 +73,6 @@ void write_frame(sph::CsvWriter& out, const sph::GraySolver& solver, const sph::
     out.row(solver.time(), body.x[a].x(), body.x[a].y(), sig(0, 0), sig(1, 1), sig(0, 1),
             body.motion[a] == sph::Motion::Free ? 0 : 1);
   }
-}
-
-sph::Snapshot snapshot_of(const sph::GraySolver& solver, const sph::ElasticBody& body) {
-  sph::Snapshot sn{solver.time(), solver.steps(), body.x, body.v, body.rho, {}, {}, {}};
-  for (std::size_t a = 0; a < body.size(); ++a) {
-    const sph::Tensor2 sig = solver.stress(a);
-    sn.sxx.push_back(sig(0, 0));
-    sn.syy.push_back(sig(1, 1));
-    sn.sxy.push_back(sig(0, 1));
-  }
-  return sn;
 }
 
 std::vector<double> zero_crossings(const std::vector<TipSample>& trace) {

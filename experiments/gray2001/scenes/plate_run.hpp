@@ -6,22 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "gray2001/scenes/plate.hpp"
 #include "io/csv.hpp"
 #include "updated_lagrangian/gray_solver.hpp"
-#include "io/hdf5_snapshot.hpp"
-#include "gray2001/scenes/plate.hpp"
 
 namespace scenes {
 
 struct PlateRunSpec {
   PlateSpec plate;
-  double mu = 0.22;
-  double h_over_dp = 1.5;          ///< Gray et al. 2001 Section 7
-  double cfl = 0.25;               ///< dt = cfl h / (c_L + |v|max) (CHOSEN; see the stability sweep)
+  sph::GrayParameters scheme;      ///< the scheme's parameters (their defaults and sources: parameters.hpp)
   sph::GrayOptions options;
-  double alpha = 1.0, beta = 1.0;  ///< artificial viscosity (CHOSEN; the paper gives none)
-  double eps_artificial = 0.3;
-  int n_artificial = 4;
   double t_end = 2000;
   long max_steps = -1;             ///< stop after this many steps (smoke runs); -1: no limit
   double sample_dt = 1.0;          ///< interval of the recorded tip trace
@@ -51,8 +45,6 @@ PlateRunResult run_plate(const PlateRunSpec& s,
 std::vector<std::string> frame_columns();
 /// Appends the particles of the current state to a frame CSV: t, x, y, sigma_xx, sigma_yy, sigma_xy, fixed.
 void write_frame(sph::CsvWriter& out, const sph::GraySolver& solver, const sph::ElasticBody& body);
-/// The current state as an HDF5 snapshot with the Cauchy stress.
-sph::Snapshot snapshot_of(const sph::GraySolver& solver, const sph::ElasticBody& body);
 
 /// Times at which the tip crosses its initial position (linear interpolation), after t = 0.
 std::vector<double> zero_crossings(const std::vector<TipSample>& trace);

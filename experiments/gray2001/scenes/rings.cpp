@@ -5,11 +5,11 @@
 
 namespace scenes {
 
-Rings make_rings(const RingsSpec& s) {
+Rings make_rings(const RingsSpec& s, double rho0) {
   if (!(s.dp > 0) || !(s.r_outer > s.r_inner) || s.r_inner < 0 || s.gap < 0)
     throw std::invalid_argument("rings: need dp > 0, 0 <= r_inner < r_outer, gap >= 0");
   Rings r;
-  const double m = s.rho0 * s.dp * s.dp;
+  const double m = rho0 * s.dp * s.dp;
   const int n = static_cast<int>(std::ceil(2.0 * s.r_outer / s.dp - 1e-9));
   const double ri2 = s.r_inner * s.r_inner, ro2 = s.r_outer * s.r_outer;
   const double offset = s.r_outer + 0.5 * s.gap;
@@ -20,11 +20,12 @@ Rings make_rings(const RingsSpec& s) {
         const double x = -s.r_outer + i * s.dp, y = -s.r_outer + j * s.dp;
         const double d2 = x * x + y * y;
         if (d2 < ri2 || d2 >= ro2) continue;
-        r.body.add({x + side * offset, y}, {-side * s.speed, 0.0}, m, s.rho0);
+        r.body.add({x + side * offset, y}, {-side * s.speed, 0.0}, m, rho0);
       }
   }
   const double half = offset + s.r_outer;
-  r.box = {-2.0 * half, -2.0 * half, 2.0 * half, 2.0 * half, false, false};
+  r.body.dp = s.dp;
+  r.body.box = {-2.0 * half, -2.0 * half, 2.0 * half, 2.0 * half, false, false};
   return r;
 }
 

@@ -17,17 +17,15 @@ struct RingsSpec {
   double dp = 0.1;                      ///< Gray 2001: 0.1; PySPH's rings example: 0.05
   double gap = 0.2;                     ///< distance between the outer edges at t = 0 (PySPH: 0.2)
   double speed = 0.059;                 ///< each ring's speed toward the other / c0
-  double rho0 = 1.0;
 };
 
 struct Rings {
   sph::ElasticBody body;
-  sph::Box2 box;
   std::size_t first_right = 0;  ///< particles [0, first_right) are the left ring (moving +x), the rest the right
 };
 
 /// Square-grid points x = -r_outer + i dp (as numpy.mgrid[-ro:ro:dx] in PySPH's example) with
 /// r_inner^2 <= |x|^2 < r_outer^2, one ring left of the other, velocities +-speed along x.
-Rings make_rings(const RingsSpec& s);
+Rings make_rings(const RingsSpec& s, double rho0);
 
 }  // namespace scenes

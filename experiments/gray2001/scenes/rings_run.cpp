@@ -4,9 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include "core/diagnostics.hpp"
 #include "core/fragments.hpp"
+#include "core/run_loop.hpp"
 #include "frame/progress.hpp"
-#include "gray2001/scenes/sampled_run.hpp"
 
 namespace scenes {
 
@@ -15,12 +16,11 @@ RingsRunResult run_rings(const RingsRunSpec& s,
                          const std::string& progress_label) {
   if (!(s.t_max > 0) || !(s.sample_dt > 0) || !(s.fracture_link > 0) || s.min_fragment < 1)
     throw std::invalid_argument("rings run: need t_max, sample_dt, fracture_link > 0 and min_fragment >= 1");
-  Rings rings = make_rings(s.rings);
+  Rings rings = make_rings(s.rings, s.scheme.rho0);
   sph::ElasticBody& body = rings.body;
-  const sph::GrayParameters p = gray_parameters(s, s.rings.rho0, s.rings.dp, rings.box);
-  sph::GraySolver solver(body, p, s.options);
+  sph::GraySolver solver(body, s.scheme, s.options);
   RingsRunResult r;
-  r.dt = sph::gray_time_step(p, s.cfl, s.rings.speed);
+  r.dt = solver.time_step(s.rings.speed);
   r.particles = body.size();
   const std::size_t n = body.size(), nl = rings.first_right;
   std::vector<bool> in_left(n, false), in_right(n, false);
@@ -31,7 +31,7 @@ RingsRunResult run_rings(const RingsRunSpec& s,
   // Pieces of one ring: its fragments, its stray particles, and the label of its largest piece.
   struct Pieces { sph::Fragments f; std::size_t main = 0, fragments = 0, stray = 0; };
   auto pieces_of = [&](const std::vector<bool>& ring) {
-    Pieces p{sph::find_fragments(body.x, rings.box, s.fracture_link * s.rings.dp, ring)};
+    Pieces p{sph::find_fragments(body.x, body.box, s.fracture_link * s.rings.dp, ring)};
     for (std::size_t k = 0; k < p.f.sizes.size(); ++k) {
       if (p.f.sizes[k] > p.f.sizes[p.main]) p.main = k;
       if (p.f.sizes[k] >= s.min_fragment) ++p.fragments;
@@ -59,7 +59,7 @@ RingsRunResult run_rings(const RingsRunSpec& s,
     }
     const int contact = std::isfinite(dmin) ? 1 : 0;
     const double share = std::min(static_cast<double>(L.f.sizes[L.main]) / nl, static_cast<double>(R.f.sizes[R.main]) / (n - nl));
-    r.trace.push_back({solver.time(), solver.kinetic_energy(), 0.5 * (mass_l * vl.squaredNorm() + mass_r * vr.squaredNorm()),
+    r.trace.push_back({solver.time(), sph::kinetic_energy(solver), 0.5 * (mass_l * vl.squaredNorm() + mass_r * vr.squaredNorm()),
                        solver.elastic_energy(), vl.x(), vr.x(), xl.x() / mass_l, xr.x() / mass_r, dmin, contact, L.fragments,
                        R.fragments, L.stray + R.stray, share});
     r.max_fragments = std::max({r.max_fragments, L.fragments, R.fragments});
@@ -74,7 +74,14 @@ RingsRunResult run_rings(const RingsRunSpec& s,
   auto separated_long_enough = [&] {
     return r.contact_end >= 0 && s.run_after_contact >= 0 && solver.time() >= r.contact_end + s.run_after_contact;
   };
-  r.blow_up = run_sampled(solver, r.dt, s.t_max, s.sample_dt, sample, separated_long_enough, progress);
+  sph::Cadence samples(s.sample_dt);
+  auto observe = [&](const sph::GraySolver& sv) {
+    if (!samples.due(sv.time())) return false;
+    sample();
+    return sv.steps() > 0 && separated_long_enough();
+  };
+  r.blow_up = sph::run(solver, {r.dt, -1, s.t_max}, observe,
+                       [&](const sph::GraySolver& sv) { progress.update(sv.time(), sv.steps()); }).blow_up;
   if (r.contact_end >= 0 && r.blow_up.empty()) {
     const auto& last = r.trace.back();
     r.rebound_speed = 0.5 * (last.v_right - last.v_left);

@@ -19,13 +19,8 @@ namespace scenes {
 
 struct RingsRunSpec {
   RingsSpec rings;
-  double mu = 0.22;                ///< Gray 2001 Sec 7.2
-  double h_over_dp = 1.5;          ///< Gray 2001 Sec 7
-  double cfl = 0.25;               ///< dt = cfl h / (c_L + |v|max), as the plate drivers (CHOSEN)
+  sph::GrayParameters scheme;      ///< mu = 0.22 (Sec 7.2) is the scheme's default (parameters.hpp)
   sph::GrayOptions options;
-  double alpha = 1.0, beta = 1.0;  ///< artificial viscosity (CHOSEN, as the plate drivers)
-  double eps_artificial = 0.3;
-  int n_artificial = 4;
   double t_max = 300;              ///< the run stops here at the latest
   double run_after_contact = 60;   ///< and this long after the rings have separated (< 0: to t_max)
   double sample_dt = 1.0;

@@ -5,13 +5,26 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/diagnostics.hpp"
 #include "core/fragments.hpp"
+#include "core/run_loop.hpp"
 #include "frame/progress.hpp"
-#include "gray2001/scenes/sampled_run.hpp"
 
 namespace scenes {
 
-Slab make_slab(const SlabSpec& s) {
+sph::GrayParameters slab_scheme() {
+  sph::GrayParameters p;
+  p.mu = 0.3;
+  return p;
+}
+
+sph::GrayOptions slab_options() {
+  sph::GrayOptions o;
+  o.plasticity = true;
+  return o;
+}
+
+Slab make_slab(const SlabSpec& s, double rho0) {
   if (!(s.dp > 0) || !(s.L > 0) || !(s.H > 0) || !(s.band > 0) || s.end_accel < 0 || !(s.margin > 0))
     throw std::invalid_argument("slab: need dp, L, H, band, margin > 0 and end acceleration >= 0");
   const long nx = std::lround(s.L / s.dp), ny = std::lround(s.H / s.dp);
@@ -22,20 +35,21 @@ Slab make_slab(const SlabSpec& s) {
   slab.height = ny * s.dp;
   if (ny < 3 || 2.0 * s.band >= slab.length - 2.0 * s.dp)
     throw std::invalid_argument("slab: need at least 3 particles across and free particles between the bands");
-  const double m = s.rho0 * s.dp * s.dp;
+  const double m = rho0 * s.dp * s.dp;
   for (long j = 0; j < ny; ++j)
     for (long i = 0; i < nx; ++i) {
       const sph::Vec2 x((i + 0.5) * s.dp, (j + 0.5) * s.dp);
       const bool left = x.x() < s.band, right = x.x() > slab.length - s.band;
       if (left || right) {
         (left ? slab.left_band : slab.right_band).push_back(slab.body.size());
-        slab.body.add(x, sph::Vec2::Zero(), m, s.rho0, sph::Motion::Driven, sph::Vec2(left ? -s.end_accel : s.end_accel, 0.0));
+        slab.body.add(x, sph::Vec2::Zero(), m, rho0, sph::Motion::Driven, sph::Vec2(left ? -s.end_accel : s.end_accel, 0.0));
       } else {
-        slab.body.add(x, sph::Vec2::Zero(), m, s.rho0);
+        slab.body.add(x, sph::Vec2::Zero(), m, rho0);
       }
     }
   if (slab.left_band.empty() || slab.right_band.empty()) throw std::invalid_argument("slab: band narrower than dp / 2");
-  slab.box = {-s.margin, -s.margin, slab.length + s.margin, slab.height + s.margin, false, false};
+  slab.body.dp = s.dp;
+  slab.body.box = {-s.margin, -s.margin, slab.length + s.margin, slab.height + s.margin, false, false};
   return slab;
 }
 
@@ -133,23 +147,19 @@ SlabRunResult run_slab(const SlabRunSpec& s, const SlabObserver& on_sample, cons
   const double reach = 0.5 * s.slab.end_accel * s.t_max * s.t_max;
   if (reach > 0.9 * s.slab.margin)
     throw std::invalid_argument("slab run: the ends would travel " + std::to_string(reach) + " by t_max: raise the margin");
-  Slab slab = make_slab(s.slab);
+  Slab slab = make_slab(s.slab, s.scheme.rho0);
   sph::ElasticBody& body = slab.body;
-  sph::GrayParameters p = gray_parameters(s, s.slab.rho0, s.slab.dp, slab.box);
-  p.yield_stress = s.yield_stress;
-  sph::GrayOptions o = s.options;
-  o.plasticity = s.plasticity;
-  sph::GraySolver solver(body, p, o);
+  sph::GraySolver solver(body, s.scheme, s.options);
   SlabRunResult r;
-  r.dt = sph::gray_time_step(p, s.cfl, s.slab.end_accel * s.t_max);
+  r.dt = solver.time_step(s.slab.end_accel * s.t_max);
   r.particles = body.size();
   const double dp = s.slab.dp;
   const double sep0 = mean_x(body, slab.right_band) - mean_x(body, slab.left_band);
-  NeckMeter neck(slab.box, s.neck_bin * dp);
+  NeckMeter neck(body.box, s.neck_bin * dp);
   ColumnGaps columns(slab.nx);
 
   auto sample = [&] {
-    const auto f = sph::find_fragments(body.x, slab.box, s.fracture_link * dp);
+    const auto f = sph::find_fragments(body.x, body.box, s.fracture_link * dp);
     const std::size_t piece_l = f.label[slab.left_band.front()], piece_r = f.label[slab.right_band.front()];
     const bool parted = piece_l != piece_r;
     double junction_l = -std::numeric_limits<double>::infinity(), junction_r = std::numeric_limits<double>::infinity();
@@ -165,7 +175,7 @@ SlabRunResult run_slab(const SlabRunSpec& s, const SlabObserver& on_sample, cons
         if (body.motion[pairs.b[k]] == sph::Motion::Free) closest = std::min(closest, pairs.dx[k].norm());
     }
     const auto gap = columns.widest(body);
-    r.trace.push_back({solver.time(), ext, ext / slab.length, solver.kinetic_energy(), solver.elastic_energy(), nk.width, nk.x,
+    r.trace.push_back({solver.time(), ext, ext / slab.length, sph::kinetic_energy(solver), solver.elastic_energy(), nk.width, nk.x,
                        nk.median, closest, gap.width, gap.x, f.count, parted ? 1 : 0});
     if (closest < s.clump_ratio * dp && r.clumping_time < 0) r.clumping_time = solver.time();
     if (gap.width > s.opening_gap * dp && r.opening_time < 0) {
@@ -194,7 +204,14 @@ SlabRunResult run_slab(const SlabRunSpec& s, const SlabObserver& on_sample, cons
   auto parted_long_enough = [&] {
     return r.fracture_time >= 0 && s.run_after_fracture >= 0 && solver.time() >= r.fracture_time + s.run_after_fracture;
   };
-  r.blow_up = run_sampled(solver, r.dt, s.t_max, s.sample_dt, sample, parted_long_enough, progress);
+  sph::Cadence samples(s.sample_dt);
+  auto observe = [&](const sph::GraySolver& sv) {
+    if (!samples.due(sv.time())) return false;
+    sample();
+    return sv.steps() > 0 && parted_long_enough();
+  };
+  r.blow_up = sph::run(solver, {r.dt, -1, s.t_max}, observe,
+                       [&](const sph::GraySolver& sv) { progress.update(sv.time(), sv.steps()); }).blow_up;
   r.steps = solver.steps();
   r.wall_s = progress.elapsed_s();
   return r;

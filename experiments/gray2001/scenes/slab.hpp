@@ -20,13 +20,11 @@ struct SlabSpec {
   double dp = 0.016;          ///< Gray 2001 Sec 7.3
   double band = 0.2;          ///< driven particles: centre within `band` of an end (Sec 7.3)
   double end_accel = 2.5e-6;  ///< acceleration of EACH end, outward (READING: see the slab driver)
-  double rho0 = 1.0;
   double margin = 2.0;        ///< room around the slab in the cell-list box (sizing only)
 };
 
 struct Slab {
   sph::ElasticBody body;
-  sph::Box2 box;
   double length = 0, height = 0;  ///< of the particle block: nx dp and ny dp
   long nx = 0, ny = 0;            ///< particle a is in lattice column a % nx (added row by row)
   std::vector<std::size_t> left_band, right_band;
@@ -35,19 +33,17 @@ struct Slab {
 /// Particles at ((i + 1/2) dp, (j + 1/2) dp), i < nx = round(L / dp), j < ny = round(H / dp) (at dp = 0.016
 /// the slab is 188 x 63 particles, 3.008 x 1.008: L / dp is not an integer); the bands are Driven at
 /// -end_accel (left) and +end_accel (right) along x, everything starts at rest.
-Slab make_slab(const SlabSpec& s);
+Slab make_slab(const SlabSpec& s, double rho0);
+
+/// The scheme of Section 7.3: the scheme's defaults (parameters.hpp) with mu = 0.3.
+sph::GrayParameters slab_scheme();
+/// The terms of Section 7.3: the default terms with the von Mises return on.
+sph::GrayOptions slab_options();
 
 struct SlabRunSpec {
   SlabSpec slab;
-  double mu = 0.3;                 ///< Gray 2001 Sec 7.3
-  double yield_stress = 0.03;      ///< von Mises yield strength (Sec 7.3)
-  bool plasticity = true;          ///< Sec 7.3 includes plastic behaviour in every slab run
-  double h_over_dp = 1.5;
-  double cfl = 0.25;               ///< as the plate and ring drivers (CHOSEN)
-  sph::GrayOptions options;        ///< its `plasticity` is set from the field above
-  double alpha = 1.0, beta = 1.0;  ///< artificial viscosity (CHOSEN, as the plate drivers)
-  double eps_artificial = 0.3;
-  int n_artificial = 4;
+  sph::GrayParameters scheme = slab_scheme();  ///< mu = 0.3 (Sec 7.3); the von Mises yield 0.03 is the default
+  sph::GrayOptions options = slab_options();   ///< plasticity on: Sec 7.3 includes it in every slab run
   double t_max = 700;
   double run_after_fracture = 10;  ///< stop this long after the ends part (< 0: run to t_max)
   double sample_dt = 2.0;          ///< interval of samples and fracture checks

@@ -5,8 +5,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "spam/molecular_dynamics.hpp"
 #include "core/diagnostics.hpp"
+#include "core/run_loop.hpp"
+#include "spam/molecular_dynamics.hpp"
 #include "spam/spam_solver.hpp"
 
 namespace sph::scenes {
@@ -14,25 +15,27 @@ namespace sph::scenes {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-bool finite_state(const std::vector<Vec2>& x, const std::vector<Vec2>& v) {
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (!std::isfinite(x[i].x() + x[i].y() + v[i].x() + v[i].y())) return false;
-  return true;
-}
-
-// The loop shared by MD and SPAM: `advance()` makes one step, `sample(t)` appends to the series.
-template <class Advance, class Positions, class Velocities, class Internal, class Density, class OnSample>
-void run_loop(const HexagonSetup& s, HexagonRun& r, Advance&& advance, Positions&& pos, Velocities&& vel,
-              Internal&& internal, Density&& density, OnSample&& on_sample) {
+// The loop shared by MD and SPAM (any solver of the contract of core/run_loop.hpp): `internal()` is the
+// internal energy, `density()` the particle densities of the current state, `on_sample()` runs after each
+// sample. Samples every sample_every steps and after the last; a run fails when it blows up (non-finite
+// state) or flies apart (shape rms > n).
+template <class Solver, class Internal, class Density, class OnSample, class AfterStep>
+void run_loop(const HexagonSetup& s, HexagonRun& r, Solver& solver, Internal&& internal, Density&& density,
+              OnSample&& on_sample, AfterStep&& after_step) {
   const auto x0 = s.lattice();
   const double omega = s.omega(), dt = s.dt;
   const long steps = std::lround(s.revolutions * s.revolution_time() / dt);
   std::vector<long> snap_steps;
   for (double a : s.snapshot_angles) snap_steps.push_back(std::lround(a / omega / dt));
   double unwrapped = 0, last = 0;
+  auto positions = [&]() -> std::vector<Vec2> {
+    std::vector<Vec2> x(solver.size());
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = solver.position(i);
+    return x;
+  };
   auto sample = [&](long n) {
-    const auto& x = pos();
-    const auto b = body_moments(x, vel(), s.params.mass);
+    const auto x = positions();
+    const auto b = centre_of_mass_frame(solver);
     const ShapeFit f = shape_fit(x0, x);
     double da = f.angle - last;
     da -= 2 * kPi * std::nearbyint(da / (2 * kPi));
@@ -46,23 +49,24 @@ void run_loop(const HexagonSetup& s, HexagonRun& r, Advance&& advance, Positions
     if (n == 0) { r.L0 = b.angular_momentum; r.E0 = b.kinetic + U; }
     on_sample();
   };
-  const auto start = std::chrono::steady_clock::now();
-  sample(0);
-  for (std::size_t k = 0; k < snap_steps.size(); ++k)
-    if (snap_steps[k] == 0) { r.snapshot_angles.push_back(s.snapshot_angles[k]); r.snapshots.push_back(pos()); r.snapshot_density.push_back(density()); }
-  for (long n = 1; n <= steps; ++n) {
-    advance(n);
-    r.steps = n;
-    const bool ok = finite_state(pos(), vel());
-    if (!ok || n % s.sample_every == 0 || n == steps) {
-      if (!ok) { r.failed = true; r.failed_at = n * dt; break; }
-      sample(n);
-      if (r.shape_rms.back() > s.shells) { r.failed = true; r.failed_at = n * dt; break; }
-    }
+  auto snapshots = [&](long n) {
     for (std::size_t k = 0; k < snap_steps.size(); ++k)
-      if (snap_steps[k] == n) { r.snapshot_angles.push_back(s.snapshot_angles[k]); r.snapshots.push_back(pos()); r.snapshot_density.push_back(density()); }
-  }
-  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (snap_steps[k] == n) { r.snapshot_angles.push_back(s.snapshot_angles[k]); r.snapshots.push_back(positions()); r.snapshot_density.push_back(density()); }
+  };
+  auto observe = [&](const Solver& sv) {
+    const long n = sv.steps();
+    if (n > 0) after_step();
+    if (n == 0 || n % s.sample_every == 0 || n == steps) {
+      sample(n);
+      if (n > 0 && r.shape_rms.back() > s.shells) { r.failed = true; r.failed_at = n * dt; return true; }
+    }
+    snapshots(n);
+    return false;
+  };
+  const RunOutcome out = run(solver, {dt, steps}, observe);
+  if (out.blew_up()) { r.failed = true; r.failed_at = solver.steps() * dt; }
+  r.steps = solver.steps();
+  r.wall_s = out.wall_s;
 }
 }  // namespace
 
@@ -95,13 +99,11 @@ HexagonRun run_hexagon_md(const HexagonSetup& s) {
   const auto x0 = s.lattice();
   MdParams mp;
   mp.mass = s.params.mass;
-  MolecularDynamics md(x0, mp);
   MdState y{x0, std::vector<Vec2>(x0.size())};
   for (std::size_t i = 0; i < x0.size(); ++i) y.v[i] = s.omega() * Vec2(-x0[i].y(), x0[i].x());
+  MdSolver md(x0, y, mp);
   const std::vector<double> rho0(x0.size(), std::sqrt(4.0 / 3.0));
-  run_loop(s, r, [&](long n) { md.step(y, (n - 1) * s.dt, s.dt); }, [&]() -> const std::vector<Vec2>& { return y.x; },
-           [&]() -> const std::vector<Vec2>& { return y.v; }, [&] { return md.potential_energy(y); },
-           [&] { return rho0; }, [] {});
+  run_loop(s, r, md, [&] { return md.potential_energy(); }, [&] { return rho0; }, [] {}, [] {});
   return r;
 }
 
@@ -136,17 +138,14 @@ HexagonRun run_hexagon_spam(const HexagonSetup& s, const SpamOptions& o, const s
     return t;
   };
   if (s.track_advection_torque) adv_prev = advection_torque();
-  run_loop(s, r, [&](long) {
-        sim->step(s.dt);
-        if (s.track_advection_torque) {
-          const double now = advection_torque();
-          adv_int += 0.5 * s.dt * (adv_prev + now);
-          adv_prev = now;
-        }
-      }, [&]() -> const std::vector<Vec2>& { return sim->state().x; },
-           [&]() -> const std::vector<Vec2>& { return sim->state().v; },
-           [&] { double u = 0; for (double e : sim->state().e) u += m * e; return u; },
-           [&] { sim->density(rho); return rho; }, [&] { r.advection_torque_integral.push_back(adv_int); });
+  auto track = [&] {
+    if (!s.track_advection_torque) return;
+    const double now = advection_torque();
+    adv_int += 0.5 * s.dt * (adv_prev + now);
+    adv_prev = now;
+  };
+  run_loop(s, r, *sim, [&] { double u = 0; for (double e : sim->state().e) u += m * e; return u; },
+           [&] { sim->density(rho); return rho; }, [&] { r.advection_torque_integral.push_back(adv_int); }, track);
   if (gauss) {  // the multiplier of the last evaluation, recorded at the last sample only (diagnostic)
     r.gauss_beta.back() = sim->work().gauss_beta;
   }
