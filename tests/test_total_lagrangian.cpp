@@ -137,8 +137,8 @@ TEST(CentralDifference, SecondOrderOnAHarmonicOscillator) {
   EXPECT_TRUE(grows(2.01));
 }
 
-sph::BarConfig1D steel_bar(double ps) {
-  sph::BarConfig1D c;
+sph::TlConfig1D steel_bar(double ps) {
+  sph::TlConfig1D c;
   c.length = 0.15;
   c.ps = ps;
   c.modulus = 200e9;
@@ -148,9 +148,9 @@ sph::BarConfig1D steel_bar(double ps) {
   return c;
 }
 
-TEST(Bar1D, TractionExactAtTheEndAndWaveArrivesAtXOverC) {
+TEST(TlSolver1D, TractionExactAtTheEndAndWaveArrivesAtXOverC) {
   auto cfg = steel_bar(0.5e-3);
-  sph::Bar1D bar(cfg);
+  sph::TlSolver1D bar(cfg);
   const double c = std::sqrt(200e9 / 8000.0), dt = 0.3 * bar.h() / c;
   const int g = bar.nearest(0.1);
   double t_half = -1;
@@ -165,13 +165,13 @@ TEST(Bar1D, TractionExactAtTheEndAndWaveArrivesAtXOverC) {
   EXPECT_NEAR(t_half, 0.1 / c, 0.02 * 0.1 / c);
 }
 
-TEST(Bar1D, MomentumBalanceWithFreeEnds) {
+TEST(TlSolver1D, MomentumBalanceWithFreeEnds) {
   // A displacement bump in the middle, no load: total momentum sum rho v dV stays 0 while the waves are in
   // the interior (X is antisymmetric on the uniform lattice, so sum_p dV_p (X P)_p = 0 there).
   auto cfg = steel_bar(1e-3);
   cfg.left.value = [](double) { return 0.0; };
   cfg.right.kind = sph::EndCondition1D::Kind::Traction;
-  sph::Bar1D bar(cfg);
+  sph::TlSolver1D bar(cfg);
   bar.set_initial_displacement([](double x) { return 1e-6 * std::exp(-std::pow((x - 0.075) / 0.004, 2)); });
   const double c = 5000.0, dt = 0.3 * bar.h() / c;
   double pmax = 0, vmax = 0;
@@ -188,7 +188,7 @@ TEST(Bar1D, MomentumBalanceWithFreeEnds) {
   EXPECT_LT(pmax, 1e-12 * vmax * bar.n_real());
 }
 
-TEST(Bar1D, UpdatedAndTotalLagrangianAgreeToFirstOrderInTheStrain) {
+TEST(TlSolver1D, UpdatedAndTotalLagrangianAgreeToFirstOrderInTheStrain) {
   // The same pulse through the bar with the SPH matrices built once (TL) and rebuilt from the current
   // positions every step (UL, Section 4.7.2): the two describe the same linear bar and part only through the
   // geometry, so the gauge histories differ at second order in the amplitude -- relative difference
@@ -198,9 +198,9 @@ TEST(Bar1D, UpdatedAndTotalLagrangianAgreeToFirstOrderInTheStrain) {
   auto run = [](double amp) {
     auto cfg = steel_bar(0.5e-3);
     cfg.left.value = [=](double t) { return t < 4e-6 ? -1e5 * amp : 0.0; };
-    sph::Bar1D tl(cfg);
+    sph::TlSolver1D tl(cfg);
     cfg.updated_lagrangian = true;
-    sph::Bar1D ul(cfg);
+    sph::TlSolver1D ul(cfg);
     const double c = std::sqrt(200e9 / 8000.0), dt = 0.3 * tl.h() / c;
     const int g = tl.nearest(0.1);
     double diff = 0, peak = 0;
@@ -219,11 +219,11 @@ TEST(Bar1D, UpdatedAndTotalLagrangianAgreeToFirstOrderInTheStrain) {
   EXPECT_NEAR(rel10 / rel1, 10.0, 1.0);
 }
 
-TEST(Bar1D, NeoHookeanInverseLaw) {
+TEST(TlSolver1D, NeoHookeanInverseLaw) {
   auto cfg = steel_bar(1e-3);
-  cfg.law = sph::BarConfig1D::Law::NeoHookean;
+  cfg.law = sph::TlConfig1D::Law::NeoHookean;
   cfg.lame = sph::lame_from_young_poisson(200e9, 0.3);
-  sph::Bar1D bar(cfg);
+  sph::TlSolver1D bar(cfg);
   for (double T : {-1e9, 1e5, 3e10}) EXPECT_NEAR(bar.law(bar.inverse_law(T)), T, 1e-6 * std::abs(T));
 }
 

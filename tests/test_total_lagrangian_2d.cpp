@@ -26,7 +26,7 @@ sph::BoundaryCondition2D cond(bool d0, double v0, bool d1, double v1, double lam
   return c;
 }
 
-TEST(Body2D, UniformStretchHeldByDirichletEdgesIsStatic) {
+TEST(TlSolver2D, UniformStretchHeldByDirichletEdgesIsStatic) {
   const double ps = 0.5e-3, Lx = 30 * ps, Ly = 5 * ps, e1 = 0.2, e2 = 0.1;
   auto dom = scenes::rectangle_domain(Lx, Ly, 0, 1, 2, 3);
   // u1 = e1 X on left/right, u2 = e2 Y on bottom/top, the other components traction-free.
@@ -34,7 +34,7 @@ TEST(Body2D, UniformStretchHeldByDirichletEdgesIsStatic) {
                                      cond(false, 0, true, 0, 0, e2), cond(false, 0, true, 0, 0, e2)}, ps, 3.5);
   cfg.rho = 8000;
   cfg.lame = sph::lame_from_young_poisson(200e9, 0.3);
-  sph::Body2D body(std::move(cfg));
+  sph::TlSolver2D body(std::move(cfg));
   body.set_initial_displacement([&](const Vec2& X) { return Vec2(e1 * X.x(), e2 * X.y()); });
   const double c = sph::longitudinal_wave_speed(sph::lame_from_young_poisson(200e9, 0.3), 8000);
   for (int s = 0; s < 200; ++s) body.step(0.3 * body.h() / c);
@@ -49,7 +49,7 @@ TEST(Body2D, UniformStretchHeldByDirichletEdgesIsStatic) {
   EXPECT_NEAR(T(0, 0), Texact(0, 0), 0.01 * std::abs(Texact(0, 0)));
 }
 
-TEST(Body2D, UniaxialTractionStateIsStatic) {
+TEST(TlSolver2D, UniaxialTractionStateIsStatic) {
   // Plane strain, Hooke: traction s on the left/right edges, free top/bottom: the uniform uniaxial stress
   // state is the exact static solution.
   const double ps = 1e-3, Lx = 20 * ps, Ly = 10 * ps, E = 200e9, nu = 0.3, s = 1e8;
@@ -57,9 +57,9 @@ TEST(Body2D, UniaxialTractionStateIsStatic) {
   auto cfg = scenes::make_body(dom, {cond(false, -s, false, 0), cond(false, s, false, 0), cond(false, 0, false, 0)}, ps, 3.5);
   const sph::Lame lame = sph::lame_from_young_poisson(E, nu);
   cfg.rho = 8000;
-  cfg.law = sph::BodyConfig2D::Law::Hooke;
+  cfg.law = sph::TlConfig2D::Law::Hooke;
   cfg.lame = lame;
-  sph::Body2D body(std::move(cfg));
+  sph::TlSolver2D body(std::move(cfg));
   const double e11 = s * (1 - nu * nu) / E;   // plane strain uniaxial stress: eps11 = (1 - nu^2) s / E
   const double e22ps = -nu * (1 + nu) / E * s;  // eps22 = -nu (1 + nu) s / E
   body.set_initial_displacement([&](const Vec2& X) { return Vec2(e11 * (X.x() - Lx / 2), e22ps * (X.y() - Ly / 2)); });
@@ -76,7 +76,7 @@ TEST(Body2D, UniaxialTractionStateIsStatic) {
   EXPECT_NEAR(P(1, 1), 0.0, 0.01 * s);
 }
 
-TEST(Body2D, PinnedComponentsReportThePrescribedMotionBetweenSteps) {
+TEST(TlSolver2D, PinnedComponentsReportThePrescribedMotionBetweenSteps) {
   // Left edge held (u1 = 0), right edge pulled: the held particles carry a reaction. Between steps, u() and
   // velocity() must show the prescribed motion, not the integrator's dt^2 a of that reaction.
   const double ps = 1e-3, Lx = 20 * ps, Ly = 10 * ps, s = 1e8;
@@ -84,9 +84,9 @@ TEST(Body2D, PinnedComponentsReportThePrescribedMotionBetweenSteps) {
   auto cfg = scenes::make_body(dom, {cond(true, 0, false, 0), cond(false, s, false, 0), cond(false, 0, false, 0)}, ps, 3.5);
   const sph::Lame lame = sph::lame_from_young_poisson(200e9, 0.3);
   cfg.rho = 8000;
-  cfg.law = sph::BodyConfig2D::Law::Hooke;
+  cfg.law = sph::TlConfig2D::Law::Hooke;
   cfg.lame = lame;
-  sph::Body2D body(std::move(cfg));
+  sph::TlSolver2D body(std::move(cfg));
   const double c = sph::longitudinal_wave_speed(lame, 8000);
   for (int st = 0; st < 60; ++st) body.step(0.3 * body.h() / c);
   int held = 0;
@@ -102,19 +102,19 @@ TEST(Body2D, PinnedComponentsReportThePrescribedMotionBetweenSteps) {
   EXPECT_GT(moving, 0.0);  // the load has reached the body: the held edge does carry a reaction
 }
 
-// Zero-energy-mode control (BodyConfig2D::hourglass): silent on a linear field, restoring on the sawtooth
+// Zero-energy-mode control (TlConfig2D::hourglass): silent on a linear field, restoring on the sawtooth
 // that the plain SPH gradient cannot see.
-sph::BodyConfig2D free_block(double gamma) {
+sph::TlConfig2D free_block(double gamma) {
   const double ps = 1e-3;
   auto cfg = scenes::make_body(scenes::rectangle_domain(24 * ps, 24 * ps, 0, 0, 0, 0), {cond(false, 0, false, 0)}, ps, 3.5);
   cfg.rho = 1000;
-  cfg.law = sph::BodyConfig2D::Law::Hooke;
+  cfg.law = sph::TlConfig2D::Law::Hooke;
   cfg.lame = sph::lame_from_young_poisson(70e6, 0.3);
   cfg.hourglass = gamma;
   return cfg;
 }
 
-double max_interior_speed(const sph::Body2D& b, double margin) {
+double max_interior_speed(const sph::TlSolver2D& b, double margin) {
   double v = 0;
   for (int i = 0; i < b.n_real(); ++i) {
     const Vec2 X = b.X(i);
@@ -131,8 +131,8 @@ TEST(Body2DHourglass, SilentOnARotationAndOnAStretchHeldAtTheEdges) {
   // measured 2e-4 of the control's response to a sawtooth of the same amplitude. Without the gradient term
   // in the misfit the rotation alone would draw a response of the sawtooth's order.
   const double ps = 1e-3, th = 1e-3, dt = 1e-7;
-  auto speeds = [&](sph::BodyConfig2D cfg, const std::function<Vec2(const Vec2&)>& u0) {
-    sph::Body2D b(std::move(cfg));
+  auto speeds = [&](sph::TlConfig2D cfg, const std::function<Vec2(const Vec2&)>& u0) {
+    sph::TlSolver2D b(std::move(cfg));
     b.set_initial_displacement(u0);
     b.step(dt);
     std::vector<Vec2> v;
@@ -167,7 +167,7 @@ TEST(Body2DHourglass, RestoresTheSawtoothTheGradientCannotSee) {
   const double A = 1e-6, ps = 1e-3;
   auto saw = [&](const Vec2& X) { return Vec2(0.0, (static_cast<long>(std::lround(X.x() / ps)) % 2 ? -A : A)); };
   auto first_step = [&](double gamma, double& along) {
-    sph::Body2D b(free_block(gamma));
+    sph::TlSolver2D b(free_block(gamma));
     b.set_initial_displacement(saw);
     b.step(1e-7);
     along = 0;

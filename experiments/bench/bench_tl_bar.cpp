@@ -23,14 +23,14 @@ int main(int argc, char** argv) {
     auto out = d.csv("bench_tl_bar.csv", {"scene", "variant", "particles", "steps", "threads", "wall_s",
                                           "particle_steps_per_s", "error_name", "error"});
     for (double ps : spacings) {
-      sph::BarConfig1D cfg;
+      sph::TlConfig1D cfg;
       cfg.length = L;
       cfg.ps = ps;
       cfg.modulus = C;
       cfg.density = [rho](double) { return rho; };
       cfg.left.value = [pulse](double t) { return -pulse(t); };
       cfg.right.kind = sph::EndCondition1D::Kind::Displacement;
-      sph::Bar1D bar(cfg);
+      sph::TlSolver1D bar(cfg);
       const double t_end = (2 * L - 0.1) / c;
       const auto r = scenes::run_bar(bar, 0.5 * bar.h() / c, t_end, {0.05, 0.1});
       double s2 = 0;

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     auto g = d.csv("gauges.csv", {"case", "t", "gauge", "x", "T11", "u"});
     for (std::size_t k = 0; k < factors.size(); ++k) {
       const double f = factors[k], rhoB = f * rho, cB = std::sqrt(C / rhoB), Z = rhoB * cB / (rho * cA);
-      sph::BarConfig1D cfg;
+      sph::TlConfig1D cfg;
       cfg.length = L;
       cfg.ps = ps;
       cfg.h_over_ps = h_over_ps;
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
       cfg.right.kind = sph::EndCondition1D::Kind::Displacement;
       for (bool thesis_step : {false, true}) {
         if (thesis_step && cB <= cA) continue;
-        sph::Bar1D bar(cfg);
+        sph::TlSolver1D bar(cfg);
         const double dt = 0.5 * h / (thesis_step ? cA : std::max(cA, cB));
         const double tend = thesis_step ? 20e-6 : t_end;
         const auto r = scenes::run_bar(bar, dt, tend, gauges, thesis_step ? 1 : std::max(1, static_cast<int>(std::lround(0.5 * h / cA / dt))),

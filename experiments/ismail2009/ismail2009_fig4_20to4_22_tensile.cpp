@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "core/run_loop.hpp"
 #include "frame/driver.hpp"
 #include "core/materials.hpp"
 #include "ismail2009/scenes/bar.hpp"
@@ -49,7 +50,7 @@ int main(int argc, char** argv) {
     auto pc = d.csv("particles.csv", {"variant", "t", "i", "X", "du"});
     for (const bool ul : {false, true}) {
       const std::string variant = ul ? "updated" : "total";
-      sph::BarConfig1D cfg;
+      sph::TlConfig1D cfg;
       cfg.length = L;
       cfg.ps = ps;
       cfg.h_over_ps = h_over_ps;
@@ -58,7 +59,7 @@ int main(int argc, char** argv) {
       cfg.left.kind = cfg.right.kind = sph::EndCondition1D::Kind::Displacement;
       cfg.right.value = [eps0, L](double) { return eps0 * L; };
       cfg.updated_lagrangian = ul;
-      sph::Bar1D bar(cfg);
+      sph::TlSolver1D bar(cfg);
       bar.set_initial_displacement([eps0](double x) { return eps0 * x; });
       const int n = bar.n_real(), mid = n / 2;
       bool perturbed = false;
@@ -68,9 +69,7 @@ int main(int argc, char** argv) {
       // Per adjacent pair of the middle seven: sums for the correlation of their du histories.
       std::vector<std::array<double, 5>> pair(6, {0, 0, 0, 0, 0});
       int pair_samples = 0;
-      for (int s = 0; bar.time() < t_end; ++s) {
-        if (!perturbed && bar.time() >= t_perturb) { bar.scale_displacement(mid, 1.0 + perturb); perturbed = true; }
-        bar.step(dt);
+      auto measure = [&](long s) {
         for (int i = 0; i < n; ++i) { v[i] = bar.velocity(i, dt); du[i] = bar.u(i) - eps0 * bar.X(i); }
         if (!perturbed) {
           for (int i = mid - 10; i <= mid + 10; ++i) drift = std::max(drift, std::abs(du[i]));
@@ -100,10 +99,22 @@ int main(int argc, char** argv) {
           if (bv > 0) { vzig += av / (16 * bv); ++vzig_samples; }
           for (int i = mid - 10; i <= mid + 10; ++i) max_du = std::max(max_du, std::abs(du[i]));
         }
-        if (!bar.finite()) throw std::runtime_error(variant + " Lagrangian run became non-finite");
         if (s % every == 0)
           for (int i = 0; i < n; ++i) pc.row(variant, bar.time(), i, bar.X(i), du[i]);
-      }
+      };
+      // After each step (and once at the start): the measurements, then the perturbation of the centre once
+      // the time has come, before the next step.
+      auto observe = [&](const sph::TlSolver1D&) {
+        const long s = bar.steps() - 1;  // index of the step just taken
+        if (s >= 0) measure(s);
+        if (!perturbed && bar.time() >= t_perturb && bar.time() < t_end) { bar.scale_displacement(mid, 1.0 + perturb); perturbed = true; }
+        return false;
+      };
+      sph::RunPlan plan{dt};
+      plan.t_end = t_end;
+      plan.whole_steps = true;
+      const auto outcome = sph::run(bar, plan, observe);
+      if (outcome.blew_up()) throw std::runtime_error(variant + " Lagrangian run became non-finite: " + outcome.blow_up);
       double min_corr = 1, mean_corr = 0;
       for (const auto& S : pair) {
         const double m = pair_samples, cov = S[4] / m - S[0] * S[1] / (m * m);

@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
       return reading == "young" ? m.E : sph::p_wave_modulus(sph::lame_from_young_poisson(m.E, nu));
     };
     auto make_bar = [&](const Material& m, const std::string& reading, const scenes::SmoothedPulse& p, double spacing) {
-      sph::BarConfig1D c;
+      sph::TlConfig1D c;
       c.length = L;
       c.ps = spacing;
       c.h_over_ps = h_over_ps;
@@ -106,9 +106,9 @@ int main(int argc, char** argv) {
     for (auto [name, sm] : std::vector<std::pair<std::string, double>>{
              {"smooth_large", smooth_large}, {"smooth_intermediate", smooth_mid}, {"smooth_none", 0.0}}) {
       const scenes::SmoothedPulse p(p0, pulse, sm);
-      sph::Bar1D bar(make_bar(steel, modulus, p, ps));
+      sph::TlSolver1D bar(make_bar(steel, modulus, p, ps));
       double max_neumann_err = 0;
-      const auto r = scenes::run_bar(bar, dt_factor * h / c_main, t_end, gauges, 1, 0.0, [&](const sph::Bar1D& b) {
+      const auto r = scenes::run_bar(bar, dt_factor * h / c_main, t_end, gauges, 1, 0.0, [&](const sph::TlSolver1D& b) {
         max_neumann_err = std::max(max_neumann_err, std::abs(b.stress(0) + p(b.time() - dt_factor * h / c_main)));
       });
       write_case(name, r, p, c_main, 1);
@@ -158,12 +158,12 @@ int main(int argc, char** argv) {
     d.value("h_over_c_ns_young_reading", 1e9 * h / c_b, "eq (4.47) with c = min(c_b, c_L) = c_b");
     const scenes::SmoothedPulse p_mid(p0, pulse, smooth_mid);
     auto trial = [&](double dt, const std::string& reading, int steps) {
-      sph::Bar1D bar(make_bar(steel, reading, p_mid, ps));
+      sph::TlSolver1D bar(make_bar(steel, reading, p_mid, ps));
       return scenes::run_bar(bar, dt, steps * dt, {0.0}, 1 << 30, 100 * p0).max_abs_T / p0;
     };
     for (double f : {0.35, 0.70, 1.0, 1.1}) {
       const scenes::SmoothedPulse p(p0, pulse, smooth_mid);
-      sph::Bar1D bar(make_bar(steel, "young", p, ps));
+      sph::TlSolver1D bar(make_bar(steel, "young", p, ps));
       const auto r = scenes::run_bar(bar, f * h / c_b, 40e-6, gauges, 1, 1e3 * p0);
       char name[32];
       std::snprintf(name, sizeof name, "dt_%.2f", f);
@@ -209,7 +209,7 @@ int main(int argc, char** argv) {
     for (const std::string reading : {"p_wave", "young"}) {
       for (const auto& [id, m] : mats) {
         const double c = std::sqrt(modulus_of(m, reading) / m.rho);
-        sph::Bar1D bar(make_bar(m, reading, p_mid, ps));
+        sph::TlSolver1D bar(make_bar(m, reading, p_mid, ps));
         const auto r = scenes::run_bar(bar, dt_factor * h / c, t_end, gauges);
         if (reading == modulus) write_case("material_" + id, r, p_mid, c, 1);
         auto centroid = [&](int g) {
@@ -237,7 +237,7 @@ int main(int argc, char** argv) {
                                              : std::vector<double>{1.2e-3, 0.6e-3, 0.3e-3, 0.15e-3, 0.075e-3};
     std::vector<double> errs;
     for (double sp : spacings) {
-      sph::Bar1D bar(make_bar(steel, modulus, p_mid, sp));
+      sph::TlSolver1D bar(make_bar(steel, modulus, p_mid, sp));
       const double hh = h_over_ps * sp;
       const auto r = scenes::run_bar(bar, dt_factor * hh / c_main, (2 * L - gauges[2]) / c_main, gauges);
       double s2 = 0;

@@ -21,6 +21,7 @@
 
 #include "frame/driver.hpp"
 #include "ismail2009/scenes/hole.hpp"
+#include "io/snapshot.hpp"
 #include "ismail2009/scenes/domain_2d.hpp"
 
 int main(int argc, char** argv) {
@@ -36,13 +37,13 @@ int main(int argc, char** argv) {
   d.param("h-over-ps", p.h_over_ps, "cover radius in spacings (CHOSEN)");
   d.param("settle", p.settle, "settling time after the ramp in 1/omega (CHOSEN)");
   d.param("damping", p.damping, "mass-proportional damping in units of omega (CHOSEN)");
-  d.param("hourglass", p.hourglass, "zero-energy-mode control gamma (BodyConfig2D::hourglass)");
+  d.param("hourglass", p.hourglass, "zero-energy-mode control gamma (TlConfig2D::hourglass)");
   d.param("variational", p.variational, "boundary scheme: variational (true) or ghost reflection (false)");
   return d.run(argc, argv, [&] {
     auto f = d.csv("fields.csv", {"t", "X", "Y", "ux", "uy", "sigma1", "T11", "T22", "T12"});
     sph::SnapshotSeries snaps(d.out_dir() / "snapshots.h5", d.info());
-    const auto r = scenes::run_hole(p, {0.05, 0.1, 0.2, 0.35}, [&](const sph::Body2D& b, double t) {
-      snaps.write(scenes::tl_snapshot(b));
+    const auto r = scenes::run_hole(p, {0.05, 0.1, 0.2, 0.35}, [&](const sph::TlSolver2D& b, double t) {
+      snaps.write(sph::snapshot_of(b));
       for (int i = 0; i < b.n_real(); ++i) {
         const sph::Tensor2 T = b.cauchy(i);
         f.row(t, b.X(i).x(), b.X(i).y(), b.u(i).x(), b.u(i).y(), scenes::max_principal(T), T(0, 0), T(1, 1), T(0, 1));

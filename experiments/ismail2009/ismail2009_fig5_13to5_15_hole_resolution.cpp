@@ -9,9 +9,9 @@
 // resolution: runs at 201 longer than 6/omega become non-finite, and the largest particle speed rises at rest
 // in the linear (Hooke, 1% load) runs: x27 over the last 2.4 ms at the loaded edge at 161, x18 at the corner
 // (a, a) at 81 run to 12/omega. So it is linear, not the large strain. (Speeds of particles on Dirichlet
-// components read a dt of their reaction before Body2D::step pinned them at the end of the step as well;
+// components read a dt of their reaction before TlSolver2D::step pinned them at the end of the step as well;
 // the speeds quoted here are of free particles.) Kelvin-Voigt viscosity does not touch it
-// (the gradient does not see the sawtooth), a zero-energy-mode control (BodyConfig2D::hourglass, after
+// (the gradient does not see the sawtooth), a zero-energy-mode control (TlConfig2D::hourglass, after
 // Ganzenmueller 2015) only moves it (gamma = 0.01, 0.02 at 201: to the top edge), an even point reflection at
 // the corners and a traction solve on the mirror point's gradient make it worse (non-finite). CHOSEN: damping
 // 4 omega (HoleParams::damping) with settle = 6/omega (the hole stress moves < 0.01% over the last 1/omega:
@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
   d.param("gamma-n", gamma_n, "particles along a side of the gamma sweep");
   d.param("linear-n", linear_n, "particles along a side of the linear (Hooke) run; 0 = none");
   d.param("fem-m", fem_m, "finite element meshes of the linear reference: 2m x m elements (m along the radius)");
-  d.param("hourglass", p.hourglass, "zero-energy-mode control gamma of the study (BodyConfig2D::hourglass; CHOSEN)");
+  d.param("hourglass", p.hourglass, "zero-energy-mode control gamma of the study (TlConfig2D::hourglass; CHOSEN)");
   d.param("settle", p.settle, "settling time after the ramp in 1/omega (CHOSEN)");
   d.param("damping", p.damping, "mass-proportional damping in units of omega (CHOSEN)");
   d.param("variational", p.variational, "boundary scheme: variational (true) or ghost reflection (false)");

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/run_loop.hpp"
 #include "frame/driver.hpp"
 #include "core/materials.hpp"
 #include "ismail2009/scenes/bar.hpp"
@@ -55,16 +56,16 @@ int main(int argc, char** argv) {
       const sph::Lame m = sph::lame_from_young_poisson(E, nu);
       const double c = sph::longitudinal_wave_speed(m, rho);
       const scenes::SmoothedPulse p(p0, pulse, 0.5e-6);
-      sph::BarConfig1D cfg;
+      sph::TlConfig1D cfg;
       cfg.length = Lb;
       cfg.ps = ps;
       cfg.h_over_ps = h_over_ps;
-      cfg.law = sph::BarConfig1D::Law::NeoHookean;
+      cfg.law = sph::TlConfig1D::Law::NeoHookean;
       cfg.lame = m;
       cfg.density = [rho](double) { return rho; };
       cfg.left.value = [p](double t) { return -p(t); };
       cfg.right.kind = sph::EndCondition1D::Kind::Displacement;
-      sph::Bar1D bar(cfg);
+      sph::TlSolver1D bar(cfg);
       const std::vector<double> gauges{0.0, Lb / 3, 2 * Lb / 3, Lb};
       const auto r = scenes::run_bar(bar, 0.5 * bar.h() / c, 40e-6, gauges);
       auto w = d.csv("wave.csv", {"t", "gauge", "x", "T11", "T11_exact"});
@@ -91,16 +92,16 @@ int main(int argc, char** argv) {
       const sph::Lame m = sph::lame_from_young_poisson(E, nu);
       const double c = sph::longitudinal_wave_speed(m, rho), T_load = slow * transits * L / c;
       const double ps = L / (particles - 1);
-      sph::BarConfig1D cfg;
+      sph::TlConfig1D cfg;
       cfg.length = L;
       cfg.ps = ps;
       cfg.h_over_ps = h_over_ps;
-      cfg.law = sph::BarConfig1D::Law::NeoHookean;
+      cfg.law = sph::TlConfig1D::Law::NeoHookean;
       cfg.lame = m;
       cfg.density = [rho](double) { return rho; };
       cfg.left.kind = cfg.right.kind = sph::EndCondition1D::Kind::Displacement;
       cfg.right.value = [=](double t) { return (stretch - 1.0) * L * std::min(t / T_load, 1.0); };
-      sph::Bar1D bar(cfg);
+      sph::TlSolver1D bar(cfg);
       const double dt = dt_scale * dt_factor * bar.h() / c;
       auto T_static = [&](double l) { return bar.law(l); };
       const int centre = bar.n_real() / 2, n = static_cast<int>(std::ceil(T_load / dt));
@@ -108,21 +109,28 @@ int main(int argc, char** argv) {
       StretchResult res;
       double s2 = 0;
       int ns = 0;
-      for (int s = 0; s < n; ++s) {
-        const double t = bar.time(), l = 1.0 + (stretch - 1.0) * std::min(t / T_load, 1.0);
-        bar.step(dt);
-        double dev = 0;
-        bool bad = !bar.finite();
-        for (int i = 0; i < bar.n_real() && !bad; ++i) {
-          if (!(bar.stretch(i) > 0)) bad = true;
-          if (i > 0) dev = std::max(dev, std::abs(bar.stretch(i) - bar.stretch(i - 1)) / l);
+      double t = 0;  // the time before the step just taken
+      auto imposed = [&](double tt) { return 1.0 + (stretch - 1.0) * std::min(tt / T_load, 1.0); };
+      auto observe = [&](const sph::TlSolver1D& b) {
+        const long s = b.steps() - 1;  // index of the step just taken
+        if (s >= 0) {
+          const double l = imposed(t);
+          double dev = 0;
+          bool bad = false;
+          for (int i = 0; i < b.n_real() && !bad; ++i) {
+            if (!(b.stretch(i) > 0)) bad = true;
+            if (i > 0) dev = std::max(dev, std::abs(b.stretch(i) - b.stretch(i - 1)) / l);
+          }
+          if (bad || dev > tol) { res.lost_at = l; return true; }
+          const double Tc = b.stress(centre);
+          if (t > 0.5 * T_load) { s2 += std::pow((Tc - T_static(l)) / T_static(stretch), 2); ++ns; }
+          if (write && s % every == 0) curves.row(name, nu, t, l, b.stretch(centre), Tc, T_static(l));
+          res.final_T_over_static = Tc / T_static(l);
         }
-        if (bad || dev > tol) { res.lost_at = l; break; }
-        const double Tc = bar.stress(centre);
-        if (t > 0.5 * T_load) { s2 += std::pow((Tc - T_static(l)) / T_static(stretch), 2); ++ns; }
-        if (write && s % every == 0) curves.row(name, nu, t, l, bar.stretch(centre), Tc, T_static(l));
-        res.final_T_over_static = Tc / T_static(l);
-      }
+        t = b.time();
+        return false;
+      };
+      if (sph::run(bar, {dt, n}, observe).blew_up()) res.lost_at = imposed(t);  // non-finite: lost at that step
       res.oscillation = ns ? std::sqrt(s2 / ns) : NAN;
       return res;
     };

@@ -18,21 +18,16 @@
 #include "frame/driver.hpp"
 #include "core/materials.hpp"
 #include "ismail2009/scenes/bar.hpp"
+#include "core/run_loop.hpp"
+#include "io/snapshot.hpp"
 #include "ismail2009/scenes/domain_2d.hpp"
+#include "total_lagrangian/solver_2d.hpp"
 
 namespace {
 
 using sph::Vec2;
 
-sph::BoundaryCondition2D condition(bool d0, std::function<double(const Vec2&, double)> v0, bool d1,
-                                   std::function<double(const Vec2&, double)> v1) {
-  sph::BoundaryCondition2D c;
-  c.dirichlet[0] = d0;
-  c.dirichlet[1] = d1;
-  c.value[0] = std::move(v0);
-  c.value[1] = std::move(v1);
-  return c;
-}
+const auto condition = sph::boundary_condition;
 const auto zero = [](const Vec2&, double) { return 0.0; };
 
 }  // namespace
@@ -71,7 +66,7 @@ int main(int argc, char** argv) {
       auto cfg = scenes::make_body(dom, conds, ps_wave, h_over_ps);
       cfg.rho = rho;
       cfg.lame = m;
-      sph::Body2D body(std::move(cfg));
+      sph::TlSolver2D body(std::move(cfg));
       const double dt = 0.3 * body.h() / cL, t_end = 0.13 / cL + pulse + 2e-6;
       std::vector<double> gx{L / 3, 2 * L / 3};
       std::vector<std::vector<int>> idx(2);
@@ -79,17 +74,24 @@ int main(int argc, char** argv) {
         for (int r = 0; r < rows; ++r) idx[g].push_back(body.nearest({gx[g], r * ps_wave}));
       std::vector<double> ts;
       std::vector<std::vector<std::vector<double>>> T(2, std::vector<std::vector<double>>(rows));
-      while (body.time() < t_end) {
-        const double t = body.time();
-        body.step(dt);
-        if (!body.finite()) throw std::runtime_error(kind + " wave run became non-finite");
-        ts.push_back(t);
-        for (int g = 0; g < 2; ++g)
-          for (int r = 0; r < rows; ++r) {
-            T[g][r].push_back(body.cauchy(idx[g][r])(0, 0));
-            wcsv.row(kind, t, gx[g], r, T[g][r].back());
-          }
-      }
+      double t = 0;  // the time before the step just taken: the stress refers to it
+      auto record = [&](const sph::TlSolver2D& b) {
+        if (b.steps() > 0) {
+          ts.push_back(t);
+          for (int g = 0; g < 2; ++g)
+            for (int r = 0; r < rows; ++r) {
+              T[g][r].push_back(b.cauchy(idx[g][r])(0, 0));
+              wcsv.row(kind, t, gx[g], r, T[g][r].back());
+            }
+        }
+        t = b.time();
+        return false;
+      };
+      sph::RunPlan plan{dt};
+      plan.t_end = t_end;
+      plan.whole_steps = true;
+      const auto outcome = sph::run(body, plan, record);
+      if (outcome.blew_up()) throw std::runtime_error(kind + " wave run became non-finite: " + outcome.blow_up);
       const int mid = rows / 2;
       auto centroid = [&](int g) {
         const double t50 = scenes::crossing_time(ts, T[g][mid], 0.5 * p0);
@@ -126,7 +128,7 @@ int main(int argc, char** argv) {
       auto cfg = scenes::make_body(dom, conds, ps_block, h_over_ps);
       cfg.rho = rho;
       cfg.lame = m;
-      sph::Body2D body(std::move(cfg));
+      sph::TlSolver2D body(std::move(cfg));
       body.set_initial_displacement([&](const Vec2& X) { return Vec2(0.0, (l2(0) - 1.0) * (X.y() - Hb / 2)); });
       const double dt = 0.3 * body.h() / cL;
       const int centre = body.nearest({Lb / 2, Hb / 2});
@@ -136,22 +138,26 @@ int main(int argc, char** argv) {
       int ns = 0;
       sph::Tensor2 Fend = sph::Tensor2::Identity();
       double Tend = 0, Taend = 1;
-      for (int s = 0; s < n; ++s) {
-        const double t = body.time();
-        body.step(dt);
-        if (!body.finite()) { lost = l1(t); break; }
-        const sph::Tensor2 F = body.F(centre);
-        const double T11 = body.cauchy(centre)(0, 0);
-        sph::Tensor2 Fa;
-        Fa << l1(t), 0, 0, l2(t);
-        const double Ta = sph::neo_hookean_cauchy<2>(m, Fa)(0, 0);
-        if (t > 0.5 * T_load) { s2 += (T11 - Ta) * (T11 - Ta); ++ns; }
-        if (s % every == 0) bcsv.row(path, t, l1(t), l2(t), F(0, 0), F(1, 1), T11, Ta);
-        if (s % std::max(1, n / 12) == 0 || s == n - 1) snaps.write(scenes::tl_snapshot(body));
-        Fend = F;
-        Tend = T11;
-        Taend = Ta;
-      }
+      double t = 0;  // the time before the step just taken
+      auto observe = [&](const sph::TlSolver2D& b) {
+        const long s = b.steps() - 1;  // index of the step just taken
+        if (s >= 0) {
+          const sph::Tensor2 F = b.F(centre);
+          const double T11 = b.cauchy(centre)(0, 0);
+          sph::Tensor2 Fa;
+          Fa << l1(t), 0, 0, l2(t);
+          const double Ta = sph::neo_hookean_cauchy<2>(m, Fa)(0, 0);
+          if (t > 0.5 * T_load) { s2 += (T11 - Ta) * (T11 - Ta); ++ns; }
+          if (s % every == 0) bcsv.row(path, t, l1(t), l2(t), F(0, 0), F(1, 1), T11, Ta);
+          if (s % std::max(1, n / 12) == 0 || s == n - 1) snaps.write(sph::snapshot_of(b));
+          Fend = F;
+          Tend = T11;
+          Taend = Ta;
+        }
+        t = b.time();
+        return false;
+      };
+      if (sph::run(body, {dt, n}, observe).blew_up()) lost = l1(t);  // t: the start of the step that blew up
       d.value("stability_lost_at_l1_" + path, lost, "imposed l1 when the run became non-finite (0 = never)");
       d.value("rms_T11_dev_over_final_" + path, std::sqrt(s2 / std::max(ns, 1)) / std::abs(Taend), "centre, second half of the loading");
       d.value("final_T11_over_analytic_" + path, Tend / Taend, "centre particle at l1 = 6");

@@ -5,14 +5,13 @@
 //   zip_fields(f, s1, s2, ...)     f(field of s1, the same field of s2, ...) for every field
 //   resize_fields(s, n)            every field to n entries
 //   Reorder::apply(s, order)       every field permuted, new[i] = old[order[i]] (e.g. along a space-filling
-//                                  curve, space_filling.hpp); its scratch is kept, so it does not allocate
-//                                  once it has reached the largest field's size
+//                                  curve, space_filling.hpp), in place; no allocation once sized
 //   FieldAlgebra<State>            out = a + s k and y += s k over every field: what RK4 needs of a state
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
+#include <stdexcept>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -61,8 +60,8 @@ std::size_t field_size(const State& s) {
   return std::get<0>(s.fields()).size();
 }
 
-/// Applies one permutation to every field of a state. The fields must be trivially copyable (numbers,
-/// fixed-size Eigen types, enums).
+/// Applies one permutation to every field of a state, in place, cycle by cycle (any copyable element type,
+/// Eigen's included); its only scratch, one flag per particle, is kept between calls.
 class Reorder {
  public:
   template <class State>
@@ -73,13 +72,22 @@ class Reorder {
  private:
   template <class T>
   void permute(std::vector<T>& field, const std::vector<std::uint32_t>& order) {
-    static_assert(std::is_trivially_copyable_v<T>, "Reorder: fields must be trivially copyable");
-    const std::size_t n = field.size(), bytes = n * sizeof(T);
-    if (scratch_.size() < bytes) scratch_.resize(bytes);
-    for (std::size_t i = 0; i < n; ++i) std::memcpy(scratch_.data() + i * sizeof(T), &field[order[i]], sizeof(T));
-    std::memcpy(static_cast<void*>(field.data()), scratch_.data(), bytes);
+    const std::size_t n = field.size();
+    if (order.size() != n) throw std::invalid_argument("Reorder: the order must have one entry per particle");
+    done_.assign(n, 0);
+    for (std::size_t start = 0; start < n; ++start) {
+      if (done_[start]) continue;
+      T first = field[start];
+      std::size_t i = start;
+      for (std::size_t j = order[i]; j != start; i = j, j = order[j]) {
+        field[i] = field[j];
+        done_[i] = 1;
+      }
+      field[i] = first;
+      done_[i] = 1;
+    }
   }
-  std::vector<unsigned char> scratch_;
+  std::vector<unsigned char> done_;
 };
 
 /// The vector-space operations of a state over all its fields, element by element (no allocation):

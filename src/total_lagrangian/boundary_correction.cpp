@@ -60,9 +60,9 @@ void ModifiedSphMatrix::apply(Eigen::VectorXd& f, const Eigen::VectorXd& fbar) {
   for (std::size_t k = 0; k < set_.size(); ++k) f[set_[k]] = sol_[k];
 }
 
-CorrectiveFactorSet::CorrectiveFactorSet(const SparseMatrix& W, const KernelFn& k, const std::vector<Vec2>& x,
-                                         std::vector<int> boundary, std::vector<int> ghosts)
-    : W_(&W), boundary_(std::move(boundary)) {
+void CorrectiveFactorSet::init(const std::vector<Vec2>& x, const std::vector<int>& ghosts,
+                               const std::function<double(double)>& cover) {
+  const SparseMatrix& W = *W_;
   const int n = static_cast<int>(W.rows()), m = static_cast<int>(boundary_.size());
   if (m == 0) throw std::invalid_argument("CorrectiveFactorSet: no boundary particles");
   std::vector<char> is_ghost(n, 0);
@@ -73,7 +73,7 @@ CorrectiveFactorSet::CorrectiveFactorSet(const SparseMatrix& W, const KernelFn& 
   std::vector<Eigen::Triplet<double, int>> ts;
   for (int kk = 0; kk < m; ++kk)
     for (SparseMatrix::InnerIterator it(W, boundary_[kk]); it; ++it)
-      if (is_ghost[it.col()]) ts.emplace_back(it.col(), kk, k.W((x[boundary_[kk]] - x[it.col()]).norm()));
+      if (is_ghost[it.col()]) ts.emplace_back(it.col(), kk, cover((x[boundary_[kk]] - x[it.col()]).norm()));
   shape_.resize(n, m);
   shape_.setFromTriplets(ts.begin(), ts.end());
   // A = (W restricted to boundary rows, ghost columns) * shape.

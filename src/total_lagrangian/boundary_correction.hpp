@@ -15,6 +15,7 @@
 #pragma once
 
 #include <Eigen/SparseLU>
+#include <functional>
 #include <vector>
 
 #include "total_lagrangian/sph_matrices.hpp"
@@ -67,14 +68,20 @@ class ModifiedSphMatrix {
 /// the outer ghosts (ModifiedSphMatrix is kept for interpolation, where that is wanted).
 class CorrectiveFactorSet {
  public:
-  /// `boundary`: particle indices b; `ghosts`: particle indices q that receive corrections.
-  CorrectiveFactorSet(const SparseMatrix& W, const KernelFn& k, const std::vector<Vec2>& x, std::vector<int> boundary,
-                      std::vector<int> ghosts);
+  /// `boundary`: particle indices b; `ghosts`: particle indices q that receive corrections. K: a bound kernel
+  /// (bound_kernel.hpp) with W(r).
+  template <class K>
+  CorrectiveFactorSet(const SparseMatrix& W, const K& k, const std::vector<Vec2>& x, std::vector<int> boundary,
+                      std::vector<int> ghosts)
+      : W_(&W), boundary_(std::move(boundary)) {
+    init(x, ghosts, [&k](double r) { return k.W(r); });
+  }
   /// Adds the corrections to f so that (W f)_b = fbar[k] for b = boundary[k].
   void apply(Eigen::VectorXd& f, const Eigen::VectorXd& fbar);
   const std::vector<int>& boundary() const { return boundary_; }
 
  private:
+  void init(const std::vector<Vec2>& x, const std::vector<int>& ghosts, const std::function<double(double)>& cover);
   const SparseMatrix* W_;
   std::vector<int> boundary_;
   SparseMatrix shape_;  // rows: ghosts (all particles), columns: boundary k; W(x_b - x_q)

@@ -6,15 +6,16 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/blow_up.hpp"
 #include "total_lagrangian/interpolation_1d.hpp"
 
 namespace sph {
 
-Bar1D::Bar1D(const BarConfig1D& cfg) : cfg_(cfg) {
+TlSolver1D::TlSolver1D(const TlConfig1D& cfg) : cfg_(cfg) {
   if (!(cfg.ps > 0) || !(cfg.length > 0) || !(cfg.h_over_ps > 1.0))
-    throw std::invalid_argument("Bar1D: need length > 0, ps > 0 and h_over_ps > 1");
-  if (cfg.law == BarConfig1D::Law::Hooke && !(cfg.modulus > 0)) throw std::invalid_argument("Bar1D: modulus must be > 0");
-  if (cfg.law == BarConfig1D::Law::NeoHookean && !(cfg.lame.mu > 0)) throw std::invalid_argument("Bar1D: mu must be > 0");
+    throw std::invalid_argument("TlSolver1D: need length > 0, ps > 0 and h_over_ps > 1");
+  if (cfg.law == TlConfig1D::Law::Hooke && !(cfg.modulus > 0)) throw std::invalid_argument("TlSolver1D: modulus must be > 0");
+  if (cfg.law == TlConfig1D::Law::NeoHookean && !(cfg.lame.mu > 0)) throw std::invalid_argument("TlSolver1D: mu must be > 0");
   const auto t0 = std::chrono::steady_clock::now();
   kern_ = make_kernel_fn(cfg.kernel, 1, cfg.h_over_ps * cfg.ps);
   // Particles on the ends (Fig 2.25 boundary particles), ghosts out to one cover radius: every real
@@ -24,7 +25,7 @@ Bar1D::Bar1D(const BarConfig1D& cfg) : cfg_(cfg) {
   dV_ = line.volume;
   first_ = static_cast<int>(line.first_real);
   n_real_ = static_cast<int>(line.n_real);
-  if (first_ >= n_real_) throw std::invalid_argument("Bar1D: the bar must be longer than the cover radius");
+  if (first_ >= n_real_) throw std::invalid_argument("TlSolver1D: the bar must be longer than the cover radius");
   m_ = build_sph_matrices_1d(kern_, x_, dV_, cfg.updated_lagrangian ? cfg.ul_pattern_factor : 1.0);
   const int n = static_cast<int>(x_.size()), last = first_ + n_real_ - 1;
   std::vector<int> left, right;
@@ -45,27 +46,27 @@ Bar1D::Bar1D(const BarConfig1D& cfg) : cfg_(cfg) {
   build_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-int Bar1D::nearest(double X) const {
+int TlSolver1D::nearest(double X) const {
   const long i = std::lround(X / cfg_.ps);
   return static_cast<int>(std::min<long>(std::max<long>(i, 0), n_real_ - 1));
 }
 
-void Bar1D::set_initial_displacement(const std::function<double(double)>& u0) {
+void TlSolver1D::set_initial_displacement(const std::function<double(double)>& u0) {
   for (int i = 0; i < n_real_; ++i) u_[first_ + i] = u_prev_[first_ + i] = u0(x_[first_ + i]);
 }
 
-void Bar1D::scale_displacement(int i, double factor) {
+void TlSolver1D::scale_displacement(int i, double factor) {
   u_[first_ + i] *= factor;
   u_prev_[first_ + i] *= factor;
 }
 
-double Bar1D::law(double F) const {
-  if (cfg_.law == BarConfig1D::Law::Hooke) return cfg_.modulus * (F - 1.0);
+double TlSolver1D::law(double F) const {
+  if (cfg_.law == TlConfig1D::Law::Hooke) return cfg_.modulus * (F - 1.0);
   return neo_hookean_P<1>(cfg_.lame, Tensor<1>::Constant(F))(0, 0);  // mu (F - 1/F) + lambda ln F / F
 }
 
-double Bar1D::inverse_law(double T) const {
-  if (cfg_.law == BarConfig1D::Law::Hooke) return 1.0 + T / cfg_.modulus;
+double TlSolver1D::inverse_law(double T) const {
+  if (cfg_.law == TlConfig1D::Law::Hooke) return 1.0 + T / cfg_.modulus;
   double F = 1.0 + T / (cfg_.lame.lambda + 2.0 * cfg_.lame.mu);
   for (int it = 0; it < 60; ++it) {
     const double e = 1e-7 * F, slope = (law(F + e) - law(F - e)) / (2 * e);
@@ -74,10 +75,10 @@ double Bar1D::inverse_law(double T) const {
     F = std::max(0.5 * F, F - dF);
     if (std::abs(dF) < 1e-14 * F) return F;
   }
-  throw std::runtime_error("Bar1D::inverse_law: no stretch gives stress " + std::to_string(T));
+  throw std::runtime_error("TlSolver1D::inverse_law: no stretch gives stress " + std::to_string(T));
 }
 
-void Bar1D::apply_boundary(double t) {
+void TlSolver1D::apply_boundary(double t) {
   const int n = static_cast<int>(x_.size()), last = first_ + n_real_ - 1;
   const EndCondition1D* ends[2] = {&cfg_.left, &cfg_.right};
   const int b[2] = {first_, last};
@@ -95,7 +96,7 @@ void Bar1D::apply_boundary(double t) {
   }
 }
 
-void Bar1D::step(double dt) {
+void TlSolver1D::step(double dt) {
   const int n = static_cast<int>(x_.size()), last = first_ + n_real_ - 1;
   apply_boundary(t_);
   if (cfg_.updated_lagrangian) {
@@ -121,15 +122,22 @@ void Bar1D::step(double dt) {
   a_.array() /= rho_.array();
   central_difference_step(u_, u_prev_, a_, dt, first_, last + 1);
   t_ += dt;
+  dt_last_ = dt;
+  ++steps_;
   // A displacement end holds its value at every time level (the particle is on the boundary, Fig 2.25).
   if (cfg_.left.kind == EndCondition1D::Kind::Displacement) u_[first_] = cfg_.left.value(t_);
   if (cfg_.right.kind == EndCondition1D::Kind::Displacement) u_[last] = cfg_.right.value(t_);
+  const std::size_t bad = first_bad_particle(static_cast<std::size_t>(n), [this](std::size_t i) {
+    return !(std::isfinite(u_[i]) && std::isfinite(P_[i]));
+  });
+  if (bad < static_cast<std::size_t>(n))
+    throw_blow_up(steps_, t_, bad, Vec2(x_[bad], 0.0), "non-finite displacement or stress (particle index counts the ghosts)");
 }
 
-double Bar1D::max_abs_stress() const {
+double TlSolver1D::max_abs_stress() const {
   return P_.segment(first_, n_real_).cwiseAbs().maxCoeff();
 }
 
-bool Bar1D::finite() const { return u_.allFinite() && P_.allFinite(); }
+bool TlSolver1D::finite() const { return u_.allFinite() && P_.allFinite(); }
 
 }  // namespace sph

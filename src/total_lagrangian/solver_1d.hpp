@@ -11,7 +11,8 @@
 //      src/materials.hpp); ghost stresses by mirror: even at a fixed end (T_,x = rho a = 0 there), odd about
 //      the applied stress at a traction end (the image construction of the wave solution (4.27));
 //   4. a = (X P) / rho_0 (4.11 / 5.6); 5. central differences (4.4) on the real particles.
-// In 1D the Cauchy stress equals P11 (T = J^-1 P F^T with J = F).
+// In 1D the Cauchy stress equals P11 (T = J^-1 P F^T with J = F). TlSolver1D offers the solver contract of
+// core/run_loop.hpp (positions and velocities as 2D vectors along x).
 // CHOSEN where the thesis is silent: the ghost base values (the thesis integrates the ghosts with the rest;
 // their covers then reach past the ghost layer and their values drift, so ours are slaved to the field).
 #pragma once
@@ -35,7 +36,7 @@ struct EndCondition1D {
   std::function<double(double)> value = [](double) { return 0.0; };
 };
 
-struct BarConfig1D {
+struct TlConfig1D {
   double length = 0.15;        ///< m
   double ps = 0.15e-3;         ///< particle spacing, m
   double h_over_ps = 5.5;      ///< cover (support radius) in spacings
@@ -49,20 +50,22 @@ struct BarConfig1D {
   double ul_pattern_factor = 1.5;  ///< UL: neighbour pattern radius / support (particles may separate)
 };
 
-class Bar1D {
+class TlSolver1D {
  public:
-  explicit Bar1D(const BarConfig1D& cfg);
-  Bar1D(const Bar1D&) = delete;  // the corrective factors point into m_
-  Bar1D& operator=(const Bar1D&) = delete;
+  explicit TlSolver1D(const TlConfig1D& cfg);
+  TlSolver1D(const TlSolver1D&) = delete;  // the corrective factors point into m_
+  TlSolver1D& operator=(const TlSolver1D&) = delete;
 
   /// Sets u_0 = u_{-1} = u0(X) on the real particles (a body at rest in that state).
   void set_initial_displacement(const std::function<double(double)>& u0);
   /// Multiplies the displacement of real particle i (index into the real particles) at both time levels.
   void scale_displacement(int i, double factor);
-  /// One step of Algorithm 4.1/5.1 from t to t + dt. Stress/strain afterwards refer to time t.
+  /// One step of Algorithm 4.1/5.1 from t to t + dt. Stress/strain afterwards refer to time t. Throws
+  /// BlowUp when a displacement or stress (ghosts included) is no longer finite.
   void step(double dt);
 
   double time() const { return t_; }
+  long steps() const { return steps_; }
   int n_real() const { return n_real_; }
   int first_real() const { return first_; }
   int n_all() const { return static_cast<int>(x_.size()); }
@@ -72,6 +75,15 @@ class Bar1D {
   double u(int i) const { return u_[first_ + i]; }
   double u_prev(int i) const { return u_prev_[first_ + i]; }
   double velocity(int i, double dt) const { return (u_[first_ + i] - u_prev_[first_ + i]) / dt; }
+  // The particles, as every solver offers them (diagnostics): the real ones, along x.
+  std::size_t size() const { return static_cast<std::size_t>(n_real_); }
+  double mass(std::size_t i) const { return rho_[first_ + i] * dV_[first_ + i]; }
+  Vec2 position(std::size_t i) const { return {X(static_cast<int>(i)) + u(static_cast<int>(i)), 0.0}; }
+  /// (u_n - u_{n-1}) / dt of the last step (zero before the first).
+  Vec2 velocity(std::size_t i) const { return {dt_last_ > 0 ? velocity(static_cast<int>(i), dt_last_) : 0.0, 0.0}; }
+  double density(std::size_t i) const { return rho_[first_ + i] / F_[first_ + i]; }
+  /// T11 as the (1, 1) entry of a 2 x 2 tensor.
+  Tensor2 stress(std::size_t i) const { return (Tensor2() << P_[first_ + i], 0.0, 0.0, 0.0).finished(); }
   double stress(int i) const { return P_[first_ + i]; }  ///< T11 = P11 at time t - dt (after step)
   double stretch(int i) const { return F_[first_ + i]; }
   double max_abs_stress() const;
@@ -85,14 +97,15 @@ class Bar1D {
 
  private:
   void apply_boundary(double t);
-  BarConfig1D cfg_;
+  TlConfig1D cfg_;
   KernelFn kern_;
   std::vector<double> x_, dV_, xcur_;
   int first_ = 0, n_real_ = 0;
   SphMatrices1D m_;
   std::vector<CorrectiveFactor1D> corr_;  // [0] left, [1] right
   Eigen::VectorXd u_, u_prev_, F_, P_, a_, rho_;
-  double t_ = 0.0, build_s_ = 0.0;
+  double t_ = 0.0, build_s_ = 0.0, dt_last_ = 0.0;
+  long steps_ = 0;
 };
 
 }  // namespace sph

@@ -75,46 +75,6 @@ void update_sph_matrices_1d(SphMatrices1D& m, const KernelFn& k, const std::vect
   }
 }
 
-SphMatrices2D build_sph_matrices_2d(const KernelFn& k, const std::vector<Vec2>& x, const std::vector<double>& dV) {
-  if (x.size() != dV.size()) throw std::invalid_argument("build_sph_matrices_2d: one volume per particle");
-  if (k.dim != 2) throw std::invalid_argument("build_sph_matrices_2d: kernel must be 2D");
-  const int n = static_cast<int>(x.size());
-  Box2 box = bounding_box(x);
-  box.xmax += k.radius; box.ymax += k.radius;  // non-empty even for a single row or column
-  CellList2D cells(box, k.radius);
-  cells.build(x);
-  // Row p's entries are found independently of every other row: fill rows in parallel into per-row lists.
-  std::vector<std::vector<std::pair<int, Vec2>>> rows(n);  // (q, x_p - x_q)
-#pragma omp parallel for schedule(dynamic, 64)
-  for (int p = 0; p < n; ++p) {
-    rows[p].emplace_back(p, Vec2::Zero());
-    cells.for_each_neighbour(x, p, k.radius, [&](std::size_t q, const Vec2& d, double) {
-      rows[p].emplace_back(static_cast<int>(q), d);
-    });
-    std::sort(rows[p].begin(), rows[p].end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  }
-  SphMatrices2D m;
-  for (SparseMatrix* A : {&m.W, &m.X, &m.Y}) {
-    A->resize(n, n);
-    Eigen::VectorXi nnz(n);
-    for (int p = 0; p < n; ++p) nnz[p] = static_cast<int>(rows[p].size());
-    A->reserve(nnz);
-  }
-  for (int p = 0; p < n; ++p) {
-    for (const auto& [q, d] : rows[p]) {
-      const double r = d.norm();
-      const double g = r > 0 ? k.dWdr(r) / r * dV[q] : 0.0;  // grad_p W = dW/dr (x_p - x_q)/r
-      m.W.insert(p, q) = k.W(r) * dV[q];
-      m.X.insert(p, q) = g * d.x();
-      m.Y.insert(p, q) = g * d.y();
-    }
-  }
-  m.W.makeCompressed();
-  m.X.makeCompressed();
-  m.Y.makeCompressed();
-  return m;
-}
-
 void spmv(const SparseMatrix& A, const Eigen::VectorXd& v, Eigen::VectorXd& y) {
   const int n = static_cast<int>(A.rows());
   const int* outer = A.outerIndexPtr();

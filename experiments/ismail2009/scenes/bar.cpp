@@ -1,11 +1,11 @@
 #include "ismail2009/scenes/bar.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "core/kernels.hpp"
+#include "core/run_loop.hpp"
 
 namespace scenes {
 
@@ -43,8 +43,8 @@ double SmoothedPulse::operator()(double t) const {
   return p0_ * (cdf((t - a) / smoothing_) - cdf((t - b) / smoothing_));
 }
 
-GaugeRecord run_bar(sph::Bar1D& bar, double dt, double t_end, const std::vector<double>& gauge_x, int every,
-                    double blowup, const std::function<void(const sph::Bar1D&)>& on_step) {
+GaugeRecord run_bar(sph::TlSolver1D& bar, double dt, double t_end, const std::vector<double>& gauge_x, int every,
+                    double blowup, const std::function<void(const sph::TlSolver1D&)>& on_step) {
   GaugeRecord r;
   r.gauge_x = gauge_x;
   for (double x : gauge_x) r.gauge_i.push_back(bar.nearest(x));
@@ -56,25 +56,28 @@ GaugeRecord run_bar(sph::Bar1D& bar, double dt, double t_end, const std::vector<
   for (auto& v : r.T) v.reserve(nrec);
   for (auto& v : r.u) v.reserve(nrec);
   r.build_s = bar.build_seconds();
-  const auto t0 = std::chrono::steady_clock::now();
-  for (int s = 0; s < n; ++s) {
-    const double t_stress = bar.time();  // the stress computed in this step refers to this time
-    bar.step(dt);
-    ++r.steps;
-    const double m = bar.max_abs_stress();
-    if (!std::isfinite(m) || !bar.finite()) { r.finite = false; r.max_abs_T = std::numeric_limits<double>::infinity(); break; }
+  double t_stress = bar.time();  // the stress computed in a step refers to the time before it
+  long calls = 0;
+  auto observe = [&](const sph::TlSolver1D& b) {
+    const long s = calls++ - 1;  // index of the step just taken in this run (-1: the start)
+    if (s < 0) return false;
+    const double m = b.max_abs_stress();
     r.max_abs_T = std::max(r.max_abs_T, m);
-    if (on_step) on_step(bar);
+    if (on_step) on_step(b);
     if (s % std::max(every, 1) == 0) {
       r.t.push_back(t_stress);
       for (std::size_t g = 0; g < gauge_x.size(); ++g) {
-        r.T[g].push_back(bar.stress(r.gauge_i[g]));
-        r.u[g].push_back(bar.u_prev(r.gauge_i[g]));  // u_n, the displacement the stress was computed from
+        r.T[g].push_back(b.stress(r.gauge_i[g]));
+        r.u[g].push_back(b.u_prev(r.gauge_i[g]));  // u_n, the displacement the stress was computed from
       }
     }
-    if (blowup > 0 && m > blowup) break;
-  }
-  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    t_stress = b.time();
+    return blowup > 0 && m > blowup;
+  };
+  const auto outcome = sph::run(bar, {dt, n}, observe);
+  r.steps = static_cast<int>(outcome.steps);
+  if (outcome.blew_up()) { r.finite = false; r.max_abs_T = std::numeric_limits<double>::infinity(); }
+  r.wall_s = outcome.wall_s;
   return r;
 }
 

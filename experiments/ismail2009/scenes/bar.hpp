@@ -42,8 +42,8 @@ struct GaugeRecord {
 
 /// Runs `bar` with step dt until t_end (or until max|T| exceeds blowup, if > 0), recording the gauges every
 /// `every` steps. `on_step` (optional) is called after each step.
-GaugeRecord run_bar(sph::Bar1D& bar, double dt, double t_end, const std::vector<double>& gauge_x, int every = 1,
-                    double blowup = 0.0, const std::function<void(const sph::Bar1D&)>& on_step = nullptr);
+GaugeRecord run_bar(sph::TlSolver1D& bar, double dt, double t_end, const std::vector<double>& gauge_x, int every = 1,
+                    double blowup = 0.0, const std::function<void(const sph::TlSolver1D&)>& on_step = nullptr);
 
 /// First time >= t_from at which v crosses `level` (from the side of 0), linearly interpolated; NaN if never.
 double crossing_time(const std::vector<double>& t, const std::vector<double>& v, double level, double t_from = 0.0);

@@ -68,9 +68,9 @@ Domain2D quarter_hole_domain(double a, double R, int left, int bottom, int right
   return d;
 }
 
-sph::BodyConfig2D make_body(const Domain2D& dom, std::vector<sph::BoundaryCondition2D> conditions, double ps,
+sph::TlConfig2D make_body(const Domain2D& dom, std::vector<sph::BoundaryCondition2D> conditions, double ps,
                             double h_over_ps) {
-  sph::BodyConfig2D cfg;
+  sph::TlConfig2D cfg;
   cfg.ps = ps;
   cfg.h_over_ps = h_over_ps;
   const double radius = h_over_ps * ps * sph::ModifiedMollifierShape::support;
@@ -167,22 +167,6 @@ sph::BodyConfig2D make_body(const Domain2D& dom, std::vector<sph::BoundaryCondit
     throw std::invalid_argument("ghost_boundary: not a ghost of this body");
   };
   return cfg;
-}
-
-sph::Snapshot tl_snapshot(const sph::Body2D& body) {
-  sph::Snapshot s;
-  s.time = body.time();
-  s.step = body.steps();
-  for (int i = 0; i < body.n_real(); ++i) {
-    const sph::Tensor2 T = body.cauchy(i);
-    s.position.push_back(body.X(i) + body.u(i));
-    s.velocity.push_back(body.velocity(i));
-    s.density.push_back(body.rho0() / body.F(i).determinant());
-    s.sxx.push_back(T(0, 0));
-    s.syy.push_back(T(1, 1));
-    s.sxy.push_back(T(0, 1));
-  }
-  return s;
 }
 
 }  // namespace scenes

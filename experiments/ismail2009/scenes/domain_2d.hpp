@@ -7,8 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "io/hdf5_snapshot.hpp"
-#include "total_lagrangian/solver_2d.hpp"
+#include "total_lagrangian/body_2d.hpp"
 
 namespace scenes {
 
@@ -38,11 +37,7 @@ Domain2D quarter_hole_domain(double a, double R, int left, int bottom, int right
 
 /// Real particles (lattice points (i ps, j ps) in the body), ghosts, boundary rules and Dirichlet particles
 /// of a body on `dom`; material and kernel fields of the returned config are left for the caller.
-sph::BodyConfig2D make_body(const Domain2D& dom, std::vector<sph::BoundaryCondition2D> conditions, double ps,
+sph::TlConfig2D make_body(const Domain2D& dom, std::vector<sph::BoundaryCondition2D> conditions, double ps,
                             double h_over_ps);
-
-/// The body's real particles as an HDF5 snapshot: current positions X + u, velocities, current density
-/// rho_0 / J and the Cauchy stress.
-sph::Snapshot tl_snapshot(const sph::Body2D& body);
 
 }  // namespace scenes

@@ -1,11 +1,11 @@
 #include "ismail2009/scenes/hole.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "core/materials.hpp"
+#include "core/run_loop.hpp"
 #include "frame/progress.hpp"
 #include "ismail2009/scenes/domain_2d.hpp"
 
@@ -21,7 +21,7 @@ double max_principal(const sph::Tensor2& T) {
 double heywood_gross_concentration(double q) { return (2.0 + std::pow(1.0 - q, 3)) / (1.0 - q); }
 
 HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fractions,
-                    const std::function<void(const sph::Body2D&, double)>& snapshot) {
+                    const std::function<void(const sph::TlSolver2D&, double)>& snapshot) {
   if (p.n < 5) throw std::invalid_argument("run_hole: n >= 5");
   const double ps = p.a / (p.n - 1);
   const sph::Lame m = sph::lame_from_young_poisson(p.E, p.nu);
@@ -36,14 +36,7 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
     const double s = std::min(t / t_ramp, 1.0);
     return p.traction * (s < 1.0 ? std::sin(0.5 * M_PI * s) * std::sin(0.5 * M_PI * s) : 1.0);
   };
-  auto cond = [](bool d0, std::function<double(const Vec2&, double)> v0, bool d1, std::function<double(const Vec2&, double)> v1) {
-    sph::BoundaryCondition2D c;
-    c.dirichlet[0] = d0;
-    c.dirichlet[1] = d1;
-    c.value[0] = std::move(v0);
-    c.value[1] = std::move(v1);
-    return c;
-  };
+  const auto cond = sph::boundary_condition;
   // Conditions: 0 symmetry x = 0 (u1 = 0, t2 = 0), 1 symmetry y = 0 (u2 = 0, t1 = 0), 2 loaded edge x = a
   // (t1 = traction, t2 = 0), 3 free (top edge and hole).
   std::vector<sph::BoundaryCondition2D> conds{cond(true, zero, false, zero), cond(false, zero, true, zero),
@@ -52,11 +45,11 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   auto cfg = make_body(dom, conds, ps, p.h_over_ps);
   cfg.rho = p.rho;
   cfg.lame = m;
-  cfg.variational = p.variational;
+  cfg.closure = p.variational ? sph::TlConfig2D::Closure::Variational : sph::TlConfig2D::Closure::GhostReflection;
   cfg.damping = p.damping * omega;
   cfg.hourglass = p.hourglass;
-  cfg.law = p.hooke ? sph::BodyConfig2D::Law::Hooke : sph::BodyConfig2D::Law::NeoHookean;
-  sph::Body2D body(std::move(cfg));
+  cfg.law = p.hooke ? sph::TlConfig2D::Law::Hooke : sph::TlConfig2D::Law::NeoHookean;
+  sph::TlSolver2D body(std::move(cfg));
   HoleResult r;
   r.particles = body.n_real();
   r.build_s = body.build_seconds();
@@ -66,32 +59,33 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   const int top = body.nearest({0.0, p.R});
   double top_before = std::numeric_limits<double>::quiet_NaN();  // smoothed (0, R) stress 1/omega before the end
   double vmin_after_ramp = std::numeric_limits<double>::infinity();
-  const auto t0 = std::chrono::steady_clock::now();
   sph::Progress progress("hole sheet " + std::to_string(p.n) + " x " + std::to_string(p.n), t_end);
-  for (int s = 0; s < n; ++s) {
-    body.step(dt);
-    progress.update(body.time(), s + 1);
-    ++r.steps;
+  auto observe = [&](const sph::TlSolver2D& b) {
+    if (b.steps() == 0) return false;
+    const long s = b.steps() - 1;  // index of the step just taken
     if (s % 20 == 0 || s == n - 1) {
-      if (!body.finite()) { r.finite = false; break; }
       double pk = 0;
-      for (int i = 0; i < body.n_real(); ++i) pk = std::max(pk, max_principal(body.cauchy(i)));
+      for (int i = 0; i < b.n_real(); ++i) pk = std::max(pk, max_principal(b.cauchy(i)));
       r.peak_sigma1_dynamic = std::max(r.peak_sigma1_dynamic, pk);
       double vmax = 0;
-      for (int i = 0; i < body.n_real(); ++i) {
-        const double v = body.velocity(i).norm();
-        if (v > vmax) { vmax = v; r.fastest_X = body.X(i); }
+      for (int i = 0; i < b.n_real(); ++i) {
+        const double v = b.velocity(i).norm();
+        if (v > vmax) { vmax = v; r.fastest_X = b.X(i); }
       }
-      r.history.push_back({body.time(), max_principal(body.smoothed_cauchy(top)), pk, vmax});
-      if (body.time() > t_ramp) vmin_after_ramp = std::min(vmin_after_ramp, vmax);
+      r.history.push_back({b.time(), max_principal(b.smoothed_cauchy(top)), pk, vmax});
+      if (b.time() > t_ramp) vmin_after_ramp = std::min(vmin_after_ramp, vmax);
     }
-    if (std::isnan(top_before) && body.time() >= t_end - 1.0 / omega) top_before = max_principal(body.smoothed_cauchy(top));
-    while (snapshot && next_snap < snapshot_fractions.size() && body.time() >= snapshot_fractions[next_snap] * t_end) {
-      snapshot(body, body.time());
+    if (std::isnan(top_before) && b.time() >= t_end - 1.0 / omega) top_before = max_principal(b.smoothed_cauchy(top));
+    while (snapshot && next_snap < snapshot_fractions.size() && b.time() >= snapshot_fractions[next_snap] * t_end) {
+      snapshot(b, b.time());
       ++next_snap;
     }
-  }
-  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return false;
+  };
+  const auto outcome = sph::run(body, {dt, n}, observe, [&](const sph::TlSolver2D& b) { progress.update(b.time(), b.steps()); });
+  r.steps = static_cast<int>(outcome.steps);
+  r.finite = !outcome.blew_up();
+  r.wall_s = outcome.wall_s;
   if (r.finite) {
     for (int i = 0; i < body.n_real(); ++i) r.peak_sigma1 = std::max(r.peak_sigma1, max_principal(body.cauchy(i)));
     r.sigma1_hole_top = max_principal(body.cauchy(top));

@@ -24,8 +24,8 @@ struct HoleParams {
   /// instability of the ghost-reflection closure at the loaded and free edges, growing at a rate between omega
   /// and 2 omega, outruns it at fine resolution (201 per side; the linear law from 81); at 4 no run rises.
   double damping = 4;
-  bool variational = false;   ///< boundary scheme (see total_lagrangian_2d.hpp): ghost reflection by default
-  double hourglass = 0.0;     ///< zero-energy-mode control gamma (BodyConfig2D::hourglass)
+  bool variational = false;   ///< boundary scheme (src/total_lagrangian/body_2d.hpp): ghost reflection by default
+  double hourglass = 0.0;     ///< zero-energy-mode control gamma (TlConfig2D::hourglass)
   bool hooke = false;         ///< linear (Hooke, small strain) instead of neo-Hookean: the linear reference
 };
 
@@ -53,7 +53,7 @@ struct HoleResult {
 
 /// Runs the sheet; calls snapshot(body, t) at the given times (and at the end).
 HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fractions = {},
-                    const std::function<void(const sph::Body2D&, double)>& snapshot = nullptr);
+                    const std::function<void(const sph::TlSolver2D&, double)>& snapshot = nullptr);
 
 /// The maximum principal value of a symmetric 2 x 2 stress.
 double max_principal(const sph::Tensor2& T);
