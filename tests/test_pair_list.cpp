@@ -1,0 +1,153 @@
+// The Verlet pair list of Gray's scheme and SPAM (src/core/pair_list.hpp) against the O(N^2) search
+// (sph::brute_force_neighbours), with and without periodic wrap and skin: every pair within the support must
+// be listed exactly once in each direction with its minimum-image x_a - x_b and the formulation's W and F;
+// a skin must save re-collections while particles move less than half of it (no pair can then have come
+// within the support unseen), and must not save one once a particle has moved further.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <random>
+#include <vector>
+
+#include "core/neighbours.hpp"
+#include "core/pair_list.hpp"
+
+namespace {
+
+using sph::Box2;
+using sph::Vec2;
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+const double R = 0.1;  // the support radius
+
+// W = (1 - r/R)^2 and grad_a W = dx F, F = W'(r)/r = -2 (1 - r/R)/(R r); both zero beyond the support.
+void geometry(double r, double& W, double& F) {
+  const double q = 1.0 - r / R;
+  W = r < R ? q * q : 0.0;
+  F = r < R ? -2.0 * q / (R * r) : 0.0;
+}
+
+std::vector<Vec2> random_points(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Vec2> x(n);
+  for (Vec2& p : x) p = Vec2(u(rng), u(rng));
+  return x;
+}
+
+// Minimum image by the IEEE remainder, exact and independent of CellList2D::displacement. The library's
+// d - L nearbyint(d/L) is exact too for the |d| < L/2 of listed pairs (L n with n in {-1, 0, 1} is exact,
+// and so is the difference, being representable), so dx is compared bit for bit.
+Vec2 min_image(const Vec2& a, const Vec2& b, const Box2& box) {
+  Vec2 d = a - b;
+  if (box.periodic_x) d.x() = std::remainder(d.x(), box.Lx());
+  if (box.periodic_y) d.y() = std::remainder(d.y(), box.Ly());
+  return d;
+}
+
+// Checks the list against the direct search; returns the number of pairs within the support.
+std::size_t expect_matches_brute_force(const sph::PairList& list, const std::vector<Vec2>& x, const Box2& box,
+                                       double skin) {
+  const auto near = sph::brute_force_neighbours(x, box, R);
+  std::size_t within = 0;
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    std::map<std::size_t, std::uint32_t> slot;  // neighbour -> its entry in a's row
+    for (std::uint32_t k = list.start[a]; k < list.start[a + 1]; ++k) {
+      EXPECT_TRUE(slot.emplace(list.b[k], k).second) << "pair " << a << "-" << list.b[k] << " listed twice";
+      const Vec2 d = min_image(x[a], x[list.b[k]], box);
+      EXPECT_EQ(list.dx[k], d) << a << "-" << list.b[k];
+      EXPECT_LT(d.norm(), R + skin);  // only candidates within support + skin
+    }
+    for (std::size_t b : near[a]) {
+      const auto it = slot.find(b);
+      if (it == slot.end()) {
+        ADD_FAILURE() << "pair " << a << "-" << b << " within the support is missing";
+        continue;
+      }
+      // |dx| may differ by an ulp from the list's (fused or not): |W'| <= 2/R makes that <= 2 ulp(r)/R
+      // <= 4 eps in W, and F, a ratio of O(1) factors, is within a few eps relative.
+      double W, F;
+      geometry(list.dx[it->second].norm(), W, F);
+      EXPECT_GT(W, 0.0);
+      EXPECT_NEAR(list.W[it->second], W, 4 * eps);
+      EXPECT_NEAR(list.F[it->second], F, 8 * eps * std::abs(F));
+      slot.erase(it);
+      ++within;
+    }
+    for (const auto& [b, k] : slot) {  // candidates in the skin: no interaction
+      EXPECT_EQ(list.W[k], 0.0) << a << "-" << b;
+      EXPECT_EQ(list.F[k], 0.0) << a << "-" << b;
+    }
+  }
+  return within;
+}
+
+TEST(PairList, MatchesTheDirectSearchWithAndWithoutPeriodicWrapAndSkin) {
+  const std::vector<Vec2> x = random_points(400, 1);
+  for (bool periodic : {false, true})
+    for (double skin : {0.0, 0.03}) {
+      const Box2 box{0, 0, 1, 1, periodic, periodic};
+      sph::CellList2D cells(box, R + skin);
+      sph::PairList list;
+      list.update(cells, x, R, skin, geometry);
+      EXPECT_EQ(list.collections, 1);
+      // ~ pi R^2 N = 12.6 neighbours per particle inside (fewer near open edges): thousands of pairs.
+      const std::size_t within = expect_matches_brute_force(list, x, box, skin);
+      EXPECT_GT(within, 3000u) << "periodic " << periodic << " skin " << skin;
+      if (skin > 0) EXPECT_GT(list.pairs(), within);  // the skin holds candidates beyond the support
+      else EXPECT_EQ(list.pairs(), within);
+    }
+}
+
+// Moves every particle by `length` in a random direction.
+std::vector<Vec2> jiggle(std::vector<Vec2> x, double length, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI);
+  for (Vec2& p : x) {
+    const double t = angle(rng);
+    p += length * Vec2(std::cos(t), std::sin(t));
+  }
+  return x;
+}
+
+TEST(PairList, SkinSavesRecollectionsOnlyWhileEveryMoveIsBelowHalfTheSkin) {
+  const double skin = 0.04;
+  const Box2 box{0, 0, 1, 1, true, true};
+  sph::CellList2D cells(box, R + skin);
+  sph::PairList list;
+  const std::vector<Vec2> x0 = random_points(400, 2);
+  list.update(cells, x0, R, skin, geometry);
+  ASSERT_EQ(list.collections, 1);
+  // Every particle 0.45 skin away: no re-collection, yet the geometry is that of the new positions and
+  // no pair within the support is missed (two moves of < skin/2 cannot close a gap of more than skin).
+  const std::vector<Vec2> x1 = jiggle(x0, 0.45 * skin, 3);
+  const std::vector<Vec2> dx_before = list.dx;
+  list.update(cells, x1, R, skin, geometry);
+  EXPECT_EQ(list.collections, 1);
+  EXPECT_NE(list.dx, dx_before);
+  EXPECT_GT(expect_matches_brute_force(list, x1, box, 2 * skin), 3000u);  // candidates now up to R + 2 skin
+  // One particle 0.55 skin from where it was at the collection: collected again.
+  std::vector<Vec2> x2 = x0;
+  x2[7] += Vec2(0.55 * skin, 0.0);
+  list.update(cells, x2, R, skin, geometry);
+  EXPECT_EQ(list.collections, 2);
+  expect_matches_brute_force(list, x2, box, skin);
+}
+
+TEST(PairList, WithoutSkinAnyMoveRecollects) {
+  const Box2 box{0, 0, 1, 1, false, false};
+  sph::CellList2D cells(box, R);
+  sph::PairList list;
+  std::vector<Vec2> x = random_points(300, 4);
+  list.update(cells, x, R, 0.0, geometry);
+  list.update(cells, x, R, 0.0, geometry);  // nothing moved: nothing to collect
+  EXPECT_EQ(list.collections, 1);
+  x[123].y() += 1e-12;  // the smallest move counts
+  list.update(cells, x, R, 0.0, geometry);
+  EXPECT_EQ(list.collections, 2);
+  EXPECT_GT(expect_matches_brute_force(list, x, box, 0.0), 1000u);
+}
+
+}  // namespace
