@@ -1,8 +1,8 @@
 # One command reproduces every figure and table, another runs the tests:
 #   make figures   deps -> build -> every driver -> plots -> check against published numbers
-#   make test      deps -> build -> GoogleTest (ctest) -> quick smoke run of every driver -> quick check
-#                  -> the report on the quick results
-# Other targets: make check, make paper, make bench, make deps, make clean.
+#   make test      declaration check -> deps -> build -> GoogleTest (ctest) -> quick smoke run of every driver
+#                  -> quick check -> the report on the quick results
+# Other targets: make check, make paper, make bench, make deps, make clean, make check-targets, make list-targets.
 # Make's dependency graph reruns a driver only when its binary changed. Threads: `figures` runs the drivers
 # one at a time, each with OpenMP on all cores (RUN_JOBS=1); `quick` runs two at a time single-threaded, since
 # oversubscribed OpenMP teams spin and run many times slower.
@@ -26,11 +26,23 @@ include experiments/targets.mk
 DONE    = $(foreach t,$(TARGETS),$(RESULTS)/$(t)/.done)
 FIGS    = $(foreach t,$(TARGETS),$(FIGURES)/$(t).png)
 
-.PHONY: all figures test check paper bench deps build configure ctest results plots quick clean help
+.PHONY: all figures test check paper bench deps build configure ctest results plots quick clean help \
+        check-targets list-targets
 .DEFAULT_GOAL := help
 
 help:
 	@sed -n '1,5p' Makefile | sed 's/^# \{0,1\}//'
+
+# ---------------------------------------------------------------------------------------------------
+# The targets are declared once, in experiments/targets.mk. `make -s list-targets` prints Make's reading of
+# it: one line per target, target;drivers;extra arguments, then BENCH_DRIVERS;drivers; (tests/check_targets.py
+# compares it with the Python reader experiments/targets.py). `make check-targets`: every declared target has
+# its reference/T.csv, plots/T.py, paper/targets.csv row and driver sources, and nothing undeclared is there.
+list-targets:
+	@: $(foreach t,$(TARGETS),$(info $(t);$($(t)_DRIVERS);$(strip $($(t)_ARGS))))$(info BENCH_DRIVERS;$(BENCH_DRIVERS);)
+
+check-targets:
+	$(PY) tests/check_targets.py
 
 # ---------------------------------------------------------------------------------------------------
 # Set-up: Debian packages (apt) and the Python that can import matplotlib and pandas.
@@ -88,7 +100,7 @@ quick:
 	$(PY) paper/build_report.py --results results/quick --figures results/quick/figures --reference reference \
 	  --out results/quick/report/index.html
 
-test: deps build ctest quick
+test: check-targets deps build ctest quick
 
 # Benchmarks: Google Benchmark micro-benchmarks (results/bench/micro.json) and every scene benchmark in
 # BENCH_DRIVERS (experiments/targets.mk), each writing results/bench/<name>.csv with the columns

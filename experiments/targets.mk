@@ -1,8 +1,14 @@
-# The targets of ../shared/reproduction-targets.md that the harness reproduces, and their drivers.
-# For a target T:  TARGETS += T ;  T_DRIVERS := driver names (experiments/<driver>.cpp)
+# The targets of ../shared/reproduction-targets.md that the harness reproduces, and their drivers: the one
+# declaration of which targets exist and in which order. Make includes it; reference/check.py,
+# paper/build_report.py and tests/check_targets.py read it through experiments/targets.py.
+# For a target T:  TARGETS += T ;  T_DRIVERS := driver names (experiments/<paper>/<driver>.cpp)
 # Optional:        T_ARGS := extra command-line arguments for T's drivers (quick runs add --quick)
-# Each driver writes into results/T/; plots/T.py turns results/T/ into figures/T*.png.
+# Each driver writes into results/T/; plots/T.py turns results/T/ into figures/T*.png. A declared T also
+# needs reference/T.csv (its published numbers) and a row in paper/targets.csv (the report's title, work
+# and description); `make check-targets` (run first by `make test`) checks all of it.
 # BENCH_DRIVERS: scene benchmarks run by `make bench`, each writing results/bench/<name>.csv.
+# Only these line forms and '#' comments: the Python reader refuses anything else (Make variables,
+# conditionals, continued lines).
 
 # ---- Cover functions and the stability criterion (library: src/kernels.*, src/interpolation_1d.*) ----
 # Ismail 2009 Figs 2.3-2.8: cover functions, normalisation, share of the support with W'' > 0

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Assemble the reproduction report: one self-contained HTML page.
 
-For every target in paper/targets.csv: its description (choices made where the papers are silent), its
-figures (figures/<target>*.png, embedded), and the table of published against reproduced values from
-results/check.csv with the discrepancy analyses. HTML rather than LaTeX: the report then needs nothing
-beyond the Python already used for the plots (TeX Live is ~1 GB of packages), opens in any browser, and
-is a single file that can be attached to a paper's supplementary material.
+For every target declared in experiments/targets.mk, in its order: its description from paper/targets.csv
+(choices made where the papers are silent; one row per declared target and no other, else the build
+stops), its figures (figures/<target>*.png, embedded; none is fine), and the table of published against
+reproduced values from results/check.csv with the discrepancy analyses. HTML rather than LaTeX: the
+report then needs nothing beyond the Python already used for the plots (TeX Live is ~1 GB of packages),
+opens in any browser, and is a single file that can be attached to a paper's supplementary material.
 """
 import argparse
 import base64
@@ -16,6 +17,10 @@ import subprocess
 import sys
 
 import pandas as pd
+
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "experiments"))
+import targets as declaration  # noqa: E402  (experiments/targets.py: the reader of experiments/targets.mk)
 
 STATUS_COLOUR = {"PASS": "#1a7f37", "DISCREPANCY": "#9a6700", "FAIL": "#cf222e"}
 
@@ -47,6 +52,27 @@ def table_html(rows):
     return f"<table><tr>{head}</tr>{''.join(body)}</table>"
 
 
+def report_targets(path):
+    """paper/targets.csv's rows in the order of experiments/targets.mk; exits on any mismatch between the two."""
+    try:
+        declared = declaration.read().names
+    except declaration.DeclarationError as e:
+        sys.exit(f"build_report: {e}")
+    rows = pd.read_csv(path, dtype=str, keep_default_na=False)
+    dup = sorted(set(rows.target[rows.target.duplicated()]))
+    if dup:
+        sys.exit(f"build_report: paper/targets.csv has several rows for {', '.join(dup)}")
+    missing = [t for t in declared if t not in set(rows.target)]
+    if missing:
+        sys.exit(f"build_report: paper/targets.csv has no row for the declared target(s) {', '.join(missing)} "
+                 "(experiments/targets.mk)")
+    extra = [t for t in rows.target if t not in declared]
+    if extra:
+        sys.exit(f"build_report: paper/targets.csv has rows for {', '.join(extra)}, not declared in "
+                 "experiments/targets.mk")
+    return rows.set_index("target", drop=False).loc[declared].reset_index(drop=True)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--results", default="results")
@@ -60,7 +86,7 @@ def main():
     if not os.path.exists(check_path):
         sys.exit(f"build_report: {check_path} missing: run make figures (or make check) first")
     check = pd.read_csv(check_path, dtype=str, keep_default_na=False)
-    targets = pd.read_csv(os.path.join(root, "paper", "targets.csv"), dtype=str, keep_default_na=False)
+    targets = report_targets(os.path.join(root, "paper", "targets.csv"))
     counts = check.status.value_counts()
 
     parts = [f"""<!doctype html><html><head><meta charset="utf-8"><title>SPH elastic dynamics: reproduction report</title>

@@ -16,6 +16,9 @@ expect:   match        out of tolerance is a FAIL
                        match analysis_value (the number the analysis predicts) within the tolerance.
 quick:    no = not checked in --quick mode (the quick run cannot resolve it); anything else = checked.
 
+The targets are those declared in experiments/targets.mk: a reference file of an undeclared target, or a
+declared target without its reference file, stops the check (exit 1) before anything is compared.
+
 Reproduced values come from results/<target>/values_*.csv (quantity,value,note) written by the drivers.
 Writes <results>/check.csv with columns target,quantity,published,reproduced,tolerance,status,source,note,
 prints the table and a summary, and exits 1 on any FAIL.
@@ -29,14 +32,36 @@ import sys
 
 import pandas as pd
 
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "experiments"))
+import targets as declaration  # noqa: E402  (experiments/targets.py: the reader of experiments/targets.mk)
+
 OUT_COLUMNS = ["target", "quantity", "published", "reproduced", "tolerance", "status", "source", "note"]
 REF_COLUMNS = ["target", "quantity", "published", "unit", "compare", "tolerance", "why_tolerance", "source",
                "expect", "alt_quantity", "analysis_value", "explanation", "quick"]
 
 
+def declared_targets():
+    try:
+        return declaration.read().names
+    except declaration.DeclarationError as e:
+        sys.exit(f"check: {e}")
+
+
 def load_reference(ref_dir):
+    paths = sorted(glob.glob(os.path.join(ref_dir, "*.csv")))
+    declared = declared_targets()
+    have = {os.path.basename(p)[:-len(".csv")] for p in paths}
+    undeclared = sorted(have - set(declared))
+    if undeclared:
+        sys.exit(f"check: reference files for targets not declared in experiments/targets.mk: "
+                 f"{', '.join(os.path.join(ref_dir, t + '.csv') for t in undeclared)}")
+    lacking = [t for t in declared if t not in have]
+    if lacking:
+        sys.exit(f"check: declared targets (experiments/targets.mk) without a reference file in {ref_dir}: "
+                 f"{', '.join(lacking)}")
     frames = []
-    for path in sorted(glob.glob(os.path.join(ref_dir, "*.csv"))):
+    for path in paths:
         df = pd.read_csv(path, comment="#", dtype=str, keep_default_na=False, skipinitialspace=True)
         missing = [c for c in REF_COLUMNS if c not in df.columns]
         if missing:
