@@ -105,13 +105,16 @@ test: check-targets deps build ctest quick
 # Benchmarks: Google Benchmark micro-benchmarks (results/bench/micro.json) and every scene benchmark in
 # BENCH_DRIVERS (experiments/targets.mk), each writing results/bench/<name>.csv with the columns
 # scene,variant,particles,steps,threads,wall_s,particle_steps_per_s,error_name,error; merged into
-# results/bench.csv.
+# results/bench.csv. The files merged are named from BENCH_DRIVERS, not found by $(wildcard), which Make
+# would expand before the runs (an empty bench.csv on a fresh clone) and which would also pick up the
+# drivers' values_*.csv.
 bench: deps build
 	cmake --build $(BUILD) --target micro_bench -j $(JOBS)
 	@mkdir -p results/bench
 	$(BIN)/micro_bench --benchmark_out=results/bench/micro.json --benchmark_out_format=json
 	$(foreach b,$(BENCH_DRIVERS),$(BIN)/$(b) --out results/bench &&) true
-	@awk '/^#/ {next} { if (seen[FILENAME]++ == 0 && hdr++ > 0) next; print }' $(wildcard results/bench/*.csv) /dev/null > results/bench.csv
+	@awk '/^#/ {next} { if (seen[FILENAME]++ == 0 && hdr++ > 0) next; print }' \
+	  $(foreach b,$(BENCH_DRIVERS),results/bench/$(b).csv) /dev/null > results/bench.csv
 	@echo "make bench: results/bench.csv"; column -s, -t < results/bench.csv || cat results/bench.csv
 
 # The reproduction report (HTML; see paper/README.md for why not LaTeX).
