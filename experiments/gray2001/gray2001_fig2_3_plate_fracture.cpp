@@ -35,9 +35,8 @@ int main(int argc, char** argv) {
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("dp")) dp = 0.25;
     if (d.quick() && !d.given("periods")) periods = 1.0;
-    const double K = 1.0;
     const double mu = scheme.mu;
-    const double T = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), 2.0, 20.0, 1.0);
+    const double T = scenes::plate_theory_period(mu, 2.0, 20.0);
     auto summary = d.csv("summary.csv", {"eps", "t_end", "steps", "wall_s", "fracture_time", "fracture_time_over_T", "crack_x", "fragments_at_end"});
     for (const double eps : {0.0, 0.3}) {
       scenes::PlateRunSpec s;

@@ -34,8 +34,8 @@ int main(int argc, char** argv) {
     if (d.quick() && !d.given("n")) ns = {4, 6, 8};
     if (d.quick() && !d.given("alphas-coarse")) alphas = {2.0};
     if (ns.size() < 2) throw std::invalid_argument("need at least two resolutions");
-    const double K = 1.0, mu = scheme.mu, alpha = scheme.alpha;
-    const double T_theory = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), 2.0, 20.0, 1.0);
+    const double mu = scheme.mu, alpha = scheme.alpha;
+    const double T_theory = scenes::plate_theory_period(mu, 2.0, 20.0);
     auto table = d.csv("runs.csv", {"n", "alpha", "particles", "dt", "steps", "wall_s", "T_sph", "amp_first", "amp_second",
                                     "decay_per_period", "T_over_theory"});
     struct Run { int n; double alpha; };

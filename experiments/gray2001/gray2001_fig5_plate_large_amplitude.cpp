@@ -29,8 +29,8 @@ int main(int argc, char** argv) {
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("dp")) dp = 0.25;
     if (d.quick() && !d.given("periods")) periods = 1.0;
-    const double K = 1.0, mu = scheme.mu;
-    const double T = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), 2.0, 20.0, 1.0);
+    const double mu = scheme.mu;
+    const double T = scenes::plate_theory_period(mu, 2.0, 20.0);
     scenes::PlateRunSpec s;
     s.plate.H = 2.0;
     s.plate.dp = dp;

@@ -30,8 +30,8 @@ int main(int argc, char** argv) {
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("long-periods")) long_periods = 1.5;  // three crossings: first and last period
     if (d.quick() && !d.given("sweep-time")) sweep_time = 60;
-    const double K = 1.0, mu = scheme.mu;
-    const double T = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), 2.0, 20.0, 1.0);
+    const double mu = scheme.mu;
+    const double T = scenes::plate_theory_period(mu, 2.0, 20.0);
     auto base = [&] {
       scenes::PlateRunSpec s;
       s.plate.H = 2.0;

@@ -30,8 +30,8 @@ int main(int argc, char** argv) {
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("n")) ns = {4, 6, 8, 10};
     if (ns.size() < 4) throw std::invalid_argument("a work-precision study needs at least four resolutions");
-    const double K = 1.0, mu = scheme.mu;
-    const double T_th = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), 2.0, 20.0, 1.0);
+    const double mu = scheme.mu;
+    const double T_th = scenes::plate_theory_period(mu, 2.0, 20.0);
     struct Run { int n, threads; double T, wall; long steps; std::size_t particles; };
     std::vector<Run> runs;
     for (int n : ns)

@@ -51,9 +51,8 @@ int main(int argc, char** argv) {
     if (d.quick() && !d.given("rings-dp")) rings_dp = 0.25;
     if (d.quick() && !d.given("slab-dp")) slab_dp = 0.1;
     if (d.quick() && !d.given("slab-t-max")) slab_t_max = 300;
-    const double mu_plate = 0.6, K = 1.0;
-    const double T_theory = scenes::plate_theory_period(sph::young_from_bulk_shear(K, mu_plate),
-                                                        sph::poisson_ratio_from_bulk_shear(K, mu_plate), 2.0, 20.0, 1.0);
+    const double mu_plate = 0.6;
+    const double T_theory = scenes::plate_theory_period(mu_plate, 2.0, 20.0);
     auto table = d.csv("cures.csv", {"variant", "artificial_stress", "xsph", "plate_period", "plate_period_error", "plate_broken",
                                      "plate_fracture_time", "plate_wall_s", "rings_fragments", "rings_min_main_share",
                                      "rings_restitution", "rings_wall_s", "slab_clumping_time", "slab_fracture_time",

@@ -20,10 +20,7 @@ using namespace sph;
 int main(int argc, char** argv) {
   Driver d("hoover2004_fig4_hexagon_md_spam", "H-fig4", "rotating hexagon: MD and standard SPAM, L(t), snapshots");
   scenes::HexagonSetup s;
-  d.param("shells", s.shells, "hexagon shells n (N = 1 + 3n + 3n^2)");
-  d.param("dt", s.dt, "RK4 time step");
-  d.param("vmax", s.vmax, "rotation speed at the vertices");
-  d.param("revolutions", s.revolutions, "nominal revolutions to follow");
+  scenes::hexagon_params(d, s);
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("revolutions")) s.revolutions = 1.0 / 3.0;  // up to 120 degrees: the L rows
     if (d.quick() && !d.given("dt")) s.dt = 0.1;

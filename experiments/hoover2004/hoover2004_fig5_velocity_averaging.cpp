@@ -15,14 +15,10 @@ int main(int argc, char** argv) {
   scenes::HexagonSetup s;
   scenes::hexagon_params(d, s);
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("dt")) s.dt = 0.2;
-    if (d.quick() && !d.given("shells")) s.shells = 4;  // --quick: 61 particles
+    scenes::quick_hexagon(d, s);
     const double pi = std::acos(-1.0);
     s.snapshot_angles = {2 * pi / 3, 2 * pi};
-    std::vector<scenes::HexagonVariant> v;
-    for (const char* label : {"cont/shepard", "cont/monaghan_arith", "cont/shepard/chain", "cont/monaghan_arith/chain",
-                              "cont/monaghan_geom", "cont/v"})
-      v.push_back({label, scenes::spam_options_from_label(label)});
-    scenes::run_and_record(d, s, v);
+    scenes::run_and_record(d, s, scenes::variants({"cont/shepard", "cont/monaghan_arith", "cont/shepard/chain",
+                                                   "cont/monaghan_arith/chain", "cont/monaghan_geom", "cont/v"}));
   });
 }

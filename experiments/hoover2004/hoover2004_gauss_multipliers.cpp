@@ -17,15 +17,10 @@ int main(int argc, char** argv) {
   scenes::HexagonSetup s;
   scenes::hexagon_params(d, s);
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("dt")) s.dt = 0.2;
-    if (d.quick() && !d.given("shells")) s.shells = 4;  // --quick: 61 particles
+    scenes::quick_hexagon(d, s);
     const double pi = std::acos(-1.0);
     s.snapshot_angles = {2 * pi};
-    std::vector<scenes::HexagonVariant> v;
-    for (const char* label : {"cont/v/gauss", "cont/monaghan_arith/gauss", "cont/v"})
-      v.push_back({label, scenes::spam_options_from_label(label)});
-    v.push_back({"md", SpamOptions{}});
-    const auto runs = scenes::run_and_record(d, s, v);
+    const auto runs = scenes::run_and_record(d, s, scenes::variants({"cont/v/gauss", "cont/monaghan_arith/gauss", "cont/v", "md"}));
     auto minima = d.csv("denominator_minima.csv", {"variant", "t", "angle_deg", "D_over_mR2"});
     for (const auto& r : runs) {
       // Local minima of D/(m R^2) after the first sample (D = 0 at t = 0: rigid start).

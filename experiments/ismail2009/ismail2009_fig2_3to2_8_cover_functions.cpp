@@ -72,33 +72,6 @@ std::vector<double> breaks() {
   return {};
 }
 
-// The sign changes of d2w on (0, support): a scan with `scan` steps, then bisection to machine precision.
-// Points where d2w is exactly 0 are skipped: near q = 1 the mollifiers' e^{-1/(1-q^2)} underflows to 0
-// (for q > 0.9993), which is not a sign change (mathematically W'' > 0 there).
-template <class Shape>
-std::vector<double> inflections(int scan) {
-  auto sign = [](double v) { return v > 0 ? 1 : v < 0 ? -1 : 0; };
-  std::vector<double> roots;
-  const double R = Shape::support, step = R / scan;
-  double last_q = 1e-9 * step;
-  int last = sign(Shape::d2w(last_q));
-  for (int i = 1; i <= scan; ++i) {
-    const double q = i * step - 1e-12;
-    const int s = sign(Shape::d2w(q));
-    if (s == 0) continue;
-    if (last != 0 && s != last) {
-      double lo = last_q, hi = q;
-      for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (sign(Shape::d2w(mid)) == last ? lo : hi) = mid;
-      }
-      roots.push_back(0.5 * (lo + hi));
-    }
-    last = s;
-    last_q = q;
-  }
-  return roots;
-}
 
 // Measure of {q in (0, R): d2w(q) > 0} with weight q^(d-1) (length, area, volume share), and the mass
 // share int_{W''>0} w q^(d-1) / int w q^(d-1) (a candidate reading of the thesis's 82%).
@@ -113,7 +86,7 @@ PositiveShare positive_share(int scan, const GaussLegendre& gl, int panels) {
   PositiveShare s;
   const double R = Shape::support;
   std::vector<double> edges{0.0};
-  for (double r : inflections<Shape>(scan)) edges.push_back(r);
+  for (double r : sph::second_derivative_sign_changes<Shape>(scan)) edges.push_back(r);
   edges.push_back(R);
   if (edges.size() > 2) s.q_first = edges[1];
   double mass_pos = 0.0;

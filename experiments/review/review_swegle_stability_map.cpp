@@ -35,29 +35,11 @@
 
 namespace {
 
-// First sign change of d2w on (0, support) by scan and bisection (exact zeros, i.e. underflow, skipped).
+// First sign change of d2w on (0, support) (NaN: none).
 template <class Shape>
 double inflection(int scan) {
-  auto sign = [](double v) { return v > 0 ? 1 : v < 0 ? -1 : 0; };
-  const double step = Shape::support / scan;
-  double last_q = 1e-9 * step;
-  int last = sign(Shape::d2w(last_q));
-  for (int i = 1; i <= scan; ++i) {
-    const double q = i * step - 1e-12;
-    const int s = sign(Shape::d2w(q));
-    if (s == 0) continue;
-    if (last != 0 && s != last) {
-      double lo = last_q, hi = q;
-      for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (sign(Shape::d2w(mid)) == last ? lo : hi) = mid;
-      }
-      return 0.5 * (lo + hi);
-    }
-    last = s;
-    last_q = q;
-  }
-  return NAN;
+  const auto roots = sph::second_derivative_sign_changes<Shape>(scan);
+  return roots.empty() ? NAN : roots.front();
 }
 
 const char* unstable_under(double w2) { return w2 > 0 ? "tension" : w2 < 0 ? "compression" : "marginal"; }

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace sph {
 
@@ -136,6 +137,35 @@ struct ModifiedMollifierShape {
   }
   static double normalisation(int dim) { return numerical_normalisation<ModifiedMollifierShape>(dim); }
 };
+
+/// The sign changes of the shape's w'' on (0, support), ascending: a scan with `scan` steps, then bisection
+/// to machine precision (where W'' changes sign, the Swegle tensile-instability criterion changes side).
+/// Points where w'' is exactly 0 are skipped: near q = 1 the mollifiers' e^{-1/(1-q^2)} underflows to 0 (for
+/// q > 0.9993), which is not a sign change (mathematically W'' > 0 there).
+template <class Shape>
+std::vector<double> second_derivative_sign_changes(int scan) {
+  auto sign = [](double v) { return v > 0 ? 1 : v < 0 ? -1 : 0; };
+  std::vector<double> roots;
+  const double R = Shape::support, step = R / scan;
+  double last_q = 1e-9 * step;
+  int last = sign(Shape::d2w(last_q));
+  for (int i = 1; i <= scan; ++i) {
+    const double q = i * step - 1e-12;
+    const int s = sign(Shape::d2w(q));
+    if (s == 0) continue;
+    if (last != 0 && s != last) {
+      double lo = last_q, hi = q;
+      for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (sign(Shape::d2w(mid)) == last ? lo : hi) = mid;
+      }
+      roots.push_back(0.5 * (lo + hi));
+    }
+    last = s;
+    last_q = q;
+  }
+  return roots;
+}
 
 /// A cover function in `dim` dimensions: W, dW/dr, d2W/dr2 as functions of distance r and h.
 template <class Shape>

@@ -9,6 +9,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "core/materials.hpp"
+
 namespace scenes {
 
 double cantilever_kL() {
@@ -39,6 +41,11 @@ double plate_theory_period(double E, double nu, double H, double L, double rho) 
   const double k = cantilever_kL() / L;
   const double omega2 = E * H * H * k * k * k * k / (12.0 * rho * (1.0 - nu * nu));
   return 2.0 * M_PI / std::sqrt(omega2);
+}
+
+double plate_theory_period(double mu, double H, double L) {
+  const double K = 1.0;
+  return plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), H, L, 1.0);
 }
 
 Plate make_plate(const PlateSpec& s, const sph::GrayParameters& scheme) {

@@ -29,6 +29,9 @@ double cantilever_mode_velocity(double x, double L, double Vf);
 
 /// Thin-plate period 2 pi / omega with omega^2 = E H^2 k^4 / (12 rho (1 - nu^2)) (7.1), k = kL/L.
 double plate_theory_period(double E, double nu, double H, double L, double rho);
+/// (7.1) for the material of Gray et al. (bulk modulus K = rho0 c0^2 = 1, shear modulus mu, rho0 = 1) with the
+/// 3D moduli E = 9 K mu / (3K + mu), nu = (3K - 2 mu) / (2 (3K + mu)): the theory column's reading.
+double plate_theory_period(double mu, double H, double L);
 
 struct Plate {
   sph::ElasticBody body;       ///< its box contains the plate with room for its motion

@@ -215,6 +215,17 @@ void hexagon_params(Driver& d, HexagonSetup& s) {
   d.param("revolutions", s.revolutions, "nominal revolutions to follow");
 }
 
+void quick_hexagon(const Driver& d, HexagonSetup& s) {
+  if (d.quick() && !d.given("dt")) s.dt = 0.2;
+  if (d.quick() && !d.given("shells")) s.shells = 4;  // 61 particles
+}
+
+std::vector<HexagonVariant> variants(const std::vector<std::string>& labels) {
+  std::vector<HexagonVariant> v;
+  for (const auto& label : labels) v.push_back({label, label == "md" ? SpamOptions{} : spam_options_from_label(label)});
+  return v;
+}
+
 void write_hdf5_snapshots(const Driver& d, const HexagonRun& r, double omega, double dt) {
   SnapshotSeries h5(d.out_dir() / ("snapshots_" + value_name(r.variant) + ".h5"), d.info());
   for (std::size_t k = 0; k < r.snapshots.size(); ++k) {

@@ -79,6 +79,10 @@ namespace sph::scenes {
 
 /// Registers the hexagon options on a driver (--shells, --dt, --vmax, --revolutions).
 void hexagon_params(Driver& d, HexagonSetup& s);
+/// --quick for the hexagon figures: 61 particles (4 shells) and dt = 0.2, unless given on the command line.
+void quick_hexagon(const Driver& d, HexagonSetup& s);
+/// The SPAM variants of these labels (spam_options_from_label); "md" is the molecular dynamics reference.
+std::vector<HexagonVariant> variants(const std::vector<std::string>& labels);
 /// Runs each SPAM variant (label -> options), writes series.csv and snapshots.csv, and records per variant
 /// L_over_L0_<a>deg, shape_rms_<a>deg at the snapshot angles, max_L_change and failed_at.
 std::vector<HexagonRun> run_and_record(Driver& d, const HexagonSetup& s, const std::vector<HexagonVariant>& variants);
