@@ -41,7 +41,7 @@ help:
 list-targets:
 	@: $(foreach t,$(TARGETS),$(info $(t);$($(t)_DRIVERS);$(strip $($(t)_ARGS))))$(info BENCH_DRIVERS;$(BENCH_DRIVERS);)
 
-check-targets:
+check-targets: deps
 	$(PY) tests/check_targets.py
 
 # ---------------------------------------------------------------------------------------------------
@@ -100,7 +100,7 @@ quick:
 	$(PY) paper/build_report.py --results results/quick --figures results/quick/figures --reference reference \
 	  --out results/quick/report/index.html
 
-test: check-targets deps build ctest quick
+test: deps check-targets build ctest quick
 
 # Benchmarks: Google Benchmark micro-benchmarks (results/bench/micro.json) and every scene benchmark in
 # BENCH_DRIVERS (experiments/targets.mk), each writing results/bench/<name>.csv with the columns

@@ -18,13 +18,15 @@ namespace sph {
 
 struct SpamWork {
   SpamWork(const SpamParams& p, std::size_t n)
-      : params(p), kernel(2), cells(p.box, kernel.support() * p.h + 0.0) {
+      : params(p), kernel(2), cells(p.box, kernel.support() * p.h) {
     rho.assign(n, 0); sumw.assign(n, 0); u.assign(n, Vec2::Zero()); q.assign(n, 0);
     txx.assign(n, 0); tyy.assign(n, 0); txy.assign(n, 0); ldot.assign(n, 0); scale.assign(n, 1);
     w0 = kernel.W(0.0, p.h);
   }
 
-  /// Bins the particles and refreshes the pairs and their geometry. OpenMP over particles.
+  /// Bins the particles and refreshes the pairs and their geometry. OpenMP over particles. W and F come
+  /// from Kernel::W and Kernel::F (Gray's scheme uses Kernel::W_and_F, which rounds differently in the last
+  /// bit): SPAM keeps the values it had before it moved onto the shared pair list.
   void gather(const std::vector<Vec2>& x) {
     const double h = params.h;
     pairs.update(cells, x, kernel.support() * h, 0.0, [this, h](double r, double& W, double& F) {

@@ -1,6 +1,5 @@
 #include "hoover2004/scenes/hexagon.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
