@@ -117,7 +117,7 @@ bench: deps build
 	  $(foreach b,$(BENCH_DRIVERS),results/bench/$(b).csv) /dev/null > results/bench.csv
 	@echo "make bench: results/bench.csv"; column -s, -t < results/bench.csv || cat results/bench.csv
 
-# The reproduction report (HTML; see paper/README.md for why not LaTeX).
+# The reproduction report (HTML; paper/build_report.py says why not LaTeX).
 # The check runs first; a FAIL does not stop the report, which shows it.
 paper:
 	-$(PY) reference/check.py --results $(RESULTS) $(CHECK_FLAGS) > /dev/null
