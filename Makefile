@@ -26,7 +26,7 @@ include experiments/targets.mk
 DONE    = $(foreach t,$(TARGETS),$(RESULTS)/$(t)/.done)
 FIGS    = $(foreach t,$(TARGETS),$(FIGURES)/$(t).png)
 
-.PHONY: all figures test check paper bench deps build configure ctest results plots quick clean help \
+.PHONY: all figures test check paper bench deps build configure ctest results plots quick clean help timings \
         check-targets list-targets
 .DEFAULT_GOAL := help
 
@@ -80,10 +80,19 @@ plots: $(FIGS)
 $(RESULTS)/check.csv: $(DONE) reference/check.py $(wildcard reference/*.csv)
 	$(PY) reference/check.py --results $(RESULTS) $(CHECK_FLAGS)
 
-# The main job: everything at paper resolution, then the check (fails the make on any FAIL).
+# The main job: everything at paper resolution, then the check (fails the make on any FAIL), then the
+# timing table of the drivers (results/timings.csv, also when the check fails).
 figures: deps build
+	@date +%s > $(RESULTS)/.figures_start 2>/dev/null || { mkdir -p $(RESULTS); date +%s > $(RESULTS)/.figures_start; }
 	$(MAKE) --no-print-directory -j 1 plots
-	$(MAKE) --no-print-directory check
+	@status=0; $(MAKE) --no-print-directory check || status=$$?; \
+	  $(MAKE) --no-print-directory timings; \
+	  echo "make figures: $$(( $$(date +%s) - $$(cat $(RESULTS)/.figures_start) )) s after the build"; exit $$status
+
+# results/timings.csv: every driver's timing_<driver>.csv (target, driver, wall seconds, particle-steps,
+# threads; written by the driver frame), merged, with the total.
+timings:
+	@$(PY) tools/timings.py --results $(RESULTS)
 
 all: figures
 
@@ -97,6 +106,7 @@ ctest: build
 quick:
 	OMP_NUM_THREADS=1 $(MAKE) --no-print-directory -j $(NCORES) RESULTS=results/quick FIGURES=results/quick/figures DRIVER_FLAGS=--quick plots
 	$(MAKE) --no-print-directory RESULTS=results/quick CHECK_FLAGS=--quick check
+	$(MAKE) --no-print-directory RESULTS=results/quick timings
 	$(PY) paper/build_report.py --results results/quick --figures results/quick/figures --reference reference \
 	  --out results/quick/report/index.html
 

@@ -23,6 +23,7 @@ struct Clock {
   double t = 0;
   long n = 0, blow_at = -1;
   std::vector<double> dts;
+  std::size_t size() const { return 3; }  // three particles: the run loop tallies particle-steps
   void step(double dt) {
     if (n + 1 == blow_at) sph::throw_blow_up(n + 1, t, 17, Vec2(0.5, -0.25), "test");
     t += dt;
@@ -112,6 +113,13 @@ TEST(RunLoop, BlowUpBecomesTheOutcomeAndCountsTheFailingStep) {
   EXPECT_EQ(out.steps, 5);  // the failing step counts
   EXPECT_EQ(c.steps(), 4);  // the solver completed four
   EXPECT_EQ(out.blow_up, "blow-up at step 5, t = 1, particle 17 at (0.5, -0.25): test");
+}
+
+TEST(RunLoop, TalliesTheParticleStepsItTakes) {
+  Clock c;
+  const long long before = sph::particle_steps_taken();
+  sph::run(c, {0.1, 7}, [](const Clock&) { return false; });
+  EXPECT_EQ(sph::particle_steps_taken() - before, 3 * 7);
 }
 
 TEST(Cadence, SamplesAtTheFirstCallAndThenEveryInterval) {

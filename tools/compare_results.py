@@ -7,7 +7,8 @@ Every CSV under A is matched with the file of the same relative path under B. Th
 describe the run rather than its result (# date, # code_version, and the description) are ignored; every
 other line must agree: text cells exactly, numeric cells within the relative tolerance (default 0: bit for
 bit, as the drivers print shortest round-trip numbers). Timings are not results and are skipped: the columns
-wall_s, build_s, *_wall_s and particle_steps_per_s, and the rows of a values file whose quantity names one. Prints one line per file that differs (with the
+wall_s, build_s, *_wall_s and particle_steps_per_s, and the rows of a values file whose quantity names one,
+and the drivers' timing_*.csv files (and timings.csv). Prints one line per file that differs (with the
 largest relative difference and where), the files present on one side only, and a summary; exits 1 if any
 file differs or is missing. Used to show that a refactor or a speed-up changes no result
 (tools/compare_commits.sh runs the drivers of two commits and calls this).
@@ -26,7 +27,7 @@ def csv_files(root):
     out = set()
     for d, _, files in os.walk(root):
         for f in files:
-            if f.endswith(".csv"):
+            if f.endswith(".csv") and not f.startswith("timing"):
                 out.add(os.path.relpath(os.path.join(d, f), root))
     return out
 

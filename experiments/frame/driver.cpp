@@ -1,5 +1,10 @@
 #include "frame/driver.hpp"
 
+#include "core/run_loop.hpp"
+
+#include <omp.h>
+
+#include <chrono>
 #include <exception>
 #include <iostream>
 
@@ -26,12 +31,21 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
     return app_.exit(e);
   }
   try {
+    const auto start = std::chrono::steady_clock::now();
+    const long long work0 = particle_steps_taken();
     body();
+    write_timing(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                 particle_steps_taken() - work0);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << name_ << ": error: " << e.what() << "\n";
     return 1;
   }
+}
+
+void Driver::write_timing(double wall_s, long long particle_steps) const {
+  CsvWriter t(out_ / ("timing_" + name_ + ".csv"), info(), {"target", "driver", "wall_s", "particle_steps", "threads"});
+  t.row(target_, name_, wall_s, static_cast<double>(particle_steps), omp_get_max_threads());
 }
 
 RunInfo Driver::info() const {

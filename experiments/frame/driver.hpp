@@ -74,6 +74,9 @@ class Driver {
     }
   }
 
+  /// timing_<driver>.csv in the output directory: the wall time of the run and the particle-steps its time
+  /// loops took (core/run_loop.hpp), for results/timings.csv.
+  void write_timing(double wall_s, long long particle_steps) const;
   std::string name_, target_, description_;
   CLI::App app_;
   bool quick_ = false;

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -61,6 +62,13 @@ struct NoProgress {
   void operator()(const Solver&) const {}
 };
 
+/// Particle-steps taken by every run() of the process so far (summed over threads): the work column of the
+/// timing table the driver frame writes (experiments/frame/driver.cpp).
+inline std::atomic<long long>& particle_steps_taken() {
+  static std::atomic<long long> total{0};
+  return total;
+}
+
 template <class Solver, class Observe, class Progress = NoProgress>
 RunOutcome run(Solver& solver, const RunPlan& plan, Observe&& observe, Progress&& progress = {}) {
   if (!(plan.dt > 0)) throw std::invalid_argument("run: the time step must be positive");
@@ -86,6 +94,7 @@ RunOutcome run(Solver& solver, const RunPlan& plan, Observe&& observe, Progress&
     out.blow_up = e.what();
   }
   out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  particle_steps_taken() += static_cast<long long>(solver.size()) * out.steps;
   return out;
 }
 

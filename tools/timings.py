@@ -1,0 +1,50 @@
+#!/usr/bin/env python3
+"""Merge the drivers' timing files into <results>/timings.csv and print the table.
+
+Every driver writes <results>/<target>/timing_<driver>.csv (target, driver, wall_s, particle_steps, threads:
+the wall time of its run and the particle-steps its time loops took). This script collects them, sorted by
+wall time, adds the particle-steps per second, writes <results>/timings.csv and prints it with the total.
+A run that several targets share is done once (its reuse shows as a row with little wall time).
+"""
+import argparse
+import csv
+import glob
+import os
+import sys
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--results", default="results")
+    args = ap.parse_args()
+    rows = []
+    for path in sorted(glob.glob(os.path.join(args.results, "*", "timing_*.csv"))):
+        with open(path) as f:
+            for r in csv.DictReader(l for l in f if not l.startswith("#")):
+                rows.append(r)
+    if not rows:
+        print(f"timings: no timing files under {args.results}")
+        return 0
+    rows.sort(key=lambda r: -float(r["wall_s"]))
+    out = os.path.join(args.results, "timings.csv")
+    cols = ["target", "driver", "wall_s", "particle_steps", "particle_steps_per_s", "threads"]
+    total = 0.0
+    with open(out, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(cols)
+        for r in rows:
+            wall, ps = float(r["wall_s"]), float(r["particle_steps"])
+            total += wall
+            w.writerow([r["target"], r["driver"], f"{wall:.3f}", f"{ps:.0f}", f"{ps / wall:.4g}" if wall > 0 else "",
+                        r["threads"]])
+    print(f"{'target':10} {'driver':48} {'wall_s':>9} {'particle-steps':>15} {'per s':>10} threads")
+    for r in rows:
+        wall, ps = float(r["wall_s"]), float(r["particle_steps"])
+        rate = f"{ps / wall:.3g}" if wall > 0 and ps > 0 else "-"
+        print(f"{r['target']:10} {r['driver']:48} {wall:9.1f} {ps:15.4g} {rate:>10} {r['threads']}")
+    print(f"timings: {len(rows)} driver runs, {total:.0f} s in the drivers -> {out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
