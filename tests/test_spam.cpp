@@ -125,7 +125,7 @@ TEST(Spam, PairTorquesBalanceAfterScaling) {
   EXPECT_NE(wk.torque_ratio, 1.0);
   double sum = 0, abs_sum = 0;
   for (std::size_t i = 0; i < dy.size(); ++i)
-    for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
+    for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) {
       const double t = wk.pairs.dx[k].x() * wk.f[k].y() - wk.pairs.dx[k].y() * wk.f[k].x();
       sum += t; abs_sum += std::abs(t);
     }

@@ -4,10 +4,11 @@
 // Candidates are collected from the cell list within the search radius (the kernel support) plus a skin,
 // and only re-collected when some particle has moved more than half the skin since the last collection
 // (two particles then cannot have come within the support unseen); with skin 0 they are re-collected
-// whenever anything moved. Every update refreshes the cached geometry of the candidates: x_a - x_b, W and
-// F (grad_a W_ab = (x_a - x_b) F_ab), computed by the formulation's `geometry(r, W, F)`, which must give
-// W = F = 0 beyond the support. Every pass of an evaluation reads the cache, so the kernel is evaluated
-// once per pair per update. Each pair appears twice (a->b and b->a): passes gather into their own particle
+// whenever anything moved. Every update refreshes the geometry of the candidates: x_a - x_b, W and F
+// (grad_a W_ab = (x_a - x_b) F_ab), computed by the formulation's `geometry(r, W, F)`, which must give
+// W = F = 0 beyond the support, and keeps the pairs inside the support, in candidate order: a pair with
+// W = F = 0 adds exactly nothing to any sum, so the passes skip it without changing a bit. Every pass of an
+// evaluation reads the cache, so the kernel is evaluated once per pair per update. Each pair appears twice (a->b and b->a): passes gather into their own particle
 // only, which parallelises over particles without atomics. No allocation once the arrays have reached
 // their size.
 #pragma once
@@ -21,14 +22,21 @@
 namespace sph {
 
 struct PairList {
-  std::vector<std::uint32_t> start;  ///< pairs of particle a: [start[a], start[a+1])
+  // Candidates (collected with the skin): those of particle a are cand[start[a] .. start[a+1]).
+  std::vector<std::uint32_t> start, cand;
+  // The pairs inside the support at the last update, in candidate order: those of particle a are
+  // k = first(a) .. last(a) - 1 (at the front of a's candidate slots), with
   std::vector<std::uint32_t> b;      ///< neighbour index
   std::vector<Vec2> dx;              ///< x_a - x_b (minimum image)
-  std::vector<double> W;             ///< W(r_ab, h), 0 beyond the support
+  std::vector<double> W;             ///< W(r_ab, h)
   std::vector<double> F;             ///< F_ab with grad_a W_ab = dx F_ab (Gray et al. 2001 eq 3.2)
+  std::vector<std::uint32_t> active; ///< number of pairs inside the support, per particle
   long collections = 0;              ///< how often the candidates were re-collected (diagnostics)
 
-  std::size_t pairs() const { return b.size(); }
+  std::uint32_t first(std::size_t a) const { return start[a]; }
+  std::uint32_t last(std::size_t a) const { return start[a] + active[a]; }
+  /// Candidate slots (the arrays' size).
+  std::size_t slots() const { return cand.size(); }
 
   /// Brings the list up to date for positions x. `cells` must have been constructed with a radius of at
   /// least support_radius + skin; it is rebuilt here when the candidates are re-collected.
@@ -64,14 +72,16 @@ struct PairList {
     }
     for (long a = 0; a < n; ++a) start[a + 1] += start[a];
     const std::size_t total = start[n];
+    cand.resize(total);
     b.resize(total);
     dx.resize(total);
     W.resize(total);
     F.resize(total);
+    active.resize(n);
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long a = 0; a < n; ++a) {
       std::uint32_t k = start[a];
-      cells.for_each_neighbour(x, a, radius, [&](std::size_t j, const Vec2&, double) { b[k++] = static_cast<std::uint32_t>(j); });
+      cells.for_each_neighbour(x, a, radius, [&](std::size_t j, const Vec2&, double) { cand[k++] = static_cast<std::uint32_t>(j); });
     }
     x_collected_ = x;
     ++collections;
@@ -81,13 +91,22 @@ struct PairList {
   void refresh(const CellList2D& cells, const std::vector<Vec2>& x, Geometry& geometry) {
     const long n = static_cast<long>(x.size());
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
-    for (long a = 0; a < n; ++a)
+    for (long a = 0; a < n; ++a) {
+      std::uint32_t j = start[a];
       for (std::uint32_t k = start[a]; k < start[a + 1]; ++k) {
-        const Vec2 d = cells.displacement(x[a], x[b[k]]);
-        const double r = d.norm();
-        dx[k] = d;
-        geometry(r, W[k], F[k]);  // both vanish beyond the support
+        const std::uint32_t c = cand[k];
+        const Vec2 d = cells.displacement(x[a], x[c]);
+        double w, f;
+        geometry(d.norm(), w, f);
+        if (w == 0.0 && f == 0.0) continue;  // beyond the support: every term of the pair is zero
+        b[j] = c;
+        dx[j] = d;
+        W[j] = w;
+        F[j] = f;
+        ++j;
       }
+      active[a] = j - start[a];
+    }
   }
 
   std::vector<Vec2> x_collected_;

@@ -36,13 +36,13 @@ void spam_scale_torques(std::size_t n_particles, SpamWork& wk) {
   if constexpr (P::torque == SpamTorque::PairScaling) {
 #pragma omp parallel for schedule(static) if (n >= kParallelMin) reduction(+ : pos, neg)
     for (long i = 0; i < n; ++i) {
-      for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) (wk.tau[k] > 0 ? pos : neg) += std::abs(wk.tau[k]);
+      for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) (wk.tau[k] > 0 ? pos : neg) += std::abs(wk.tau[k]);
     }
   } else {
 #pragma omp parallel for schedule(static) if (n >= kParallelMin) reduction(+ : pos, neg)
     for (long i = 0; i < n; ++i) {
       double s = 0;
-      for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) s += wk.tau[k];
+      for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) s += wk.tau[k];
       wk.ldot[i] = 0.5 * s;
       (wk.ldot[i] > 0 ? pos : neg) += std::abs(wk.ldot[i]);
     }
@@ -53,7 +53,7 @@ void spam_scale_torques(std::size_t n_particles, SpamWork& wk) {
     for (long i = 0; i < n; ++i) wk.scale[i] = torque_factor(wk.ldot[i], R);
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (long i = 0; i < n; ++i) {
-    for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
+    for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) {
       double s;
       if constexpr (P::torque == SpamTorque::PairScaling) s = torque_factor(wk.tau[k], R);
       else s = 0.5 * (wk.scale[i] + wk.scale[wk.pairs.b[k]]);

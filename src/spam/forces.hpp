@@ -33,7 +33,7 @@ void spam_forces(const SpamState& y, SpamWork& wk, SpamState& dy) {
   if constexpr (P::torque_scaling) {
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long i = 0; i < n; ++i) {
-      for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
+      for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) {
         wk.f[k] = pair_force(i, k);
         wk.tau[k] = m * (wk.pairs.dx[k].x() * wk.f[k].y() - wk.pairs.dx[k].y() * wk.f[k].x());
       }
@@ -44,7 +44,7 @@ void spam_forces(const SpamState& y, SpamWork& wk, SpamState& dy) {
   for (long i = 0; i < n; ++i) {
     Vec2 a = Vec2::Zero();
     double edot = 0;
-    for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
+    for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) {
       Vec2 f;
       if constexpr (P::torque_scaling) f = wk.f[k];
       else f = pair_force(i, k);

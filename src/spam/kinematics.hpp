@@ -27,7 +27,7 @@ void spam_density(const SpamState& y, SpamWork& wk) {
   for (long i = 0; i < n; ++i) {
     if constexpr (need_sum) {
       double s = wk.w0;
-      for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) s += wk.pairs.W[k];
+      for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) s += wk.pairs.W[k];
       wk.sumw[i] = s;
       if constexpr (P::density == SpamDensity::Summation) wk.rho[i] = m * s;
     }
@@ -51,11 +51,11 @@ void spam_advection(const SpamState& y, SpamWork& wk) {
     for (long i = 0; i < n; ++i) {
       if constexpr (P::advection == SpamAdvection::Shepard) {
         Vec2 s = wk.w0 * y.v[i];
-        for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) s += wk.pairs.W[k] * y.v[wk.pairs.b[k]];
+        for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) s += wk.pairs.W[k] * y.v[wk.pairs.b[k]];
         wk.u[i] = s / wk.sumw[i];
       } else {
         Vec2 s = Vec2::Zero();
-        for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
+        for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) {
           const std::size_t j = wk.pairs.b[k];
           s += (wk.pairs.W[k] / pair_density<P::advection>(wk.rho[i], wk.rho[j])) * (y.v[j] - y.v[i]);
         }
@@ -77,7 +77,7 @@ void spam_kinematics_rates(const SpamState& y, SpamWork& wk, SpamState& dy) {
     else dy.x[i] = y.v[i];
     if constexpr (P::density == SpamDensity::Continuity) {
       double s = 0;
-      for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) s += (c[i] - c[wk.pairs.b[k]]).dot(wk.pairs.dx[k]) * wk.pairs.F[k];
+      for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) s += (c[i] - c[wk.pairs.b[k]]).dot(wk.pairs.dx[k]) * wk.pairs.F[k];
       dy.rho[i] = m * s;
     } else {
       dy.rho[i] = 0.0;

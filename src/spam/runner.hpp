@@ -51,7 +51,7 @@ class SpamRunner final : public SpamSolver {
     wk.gather(y_.x);
     const double dmin = wk.params.closest_distance;
     for (std::size_t i = 0; i < y_.size(); ++i) {
-      for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
+      for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) {
         const std::size_t j = wk.pairs.b[k];
         if (j <= i) continue;
         const double r2 = wk.pairs.dx[k].squaredNorm();

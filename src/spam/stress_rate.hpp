@@ -24,7 +24,7 @@ void spam_stress_rate(const SpamState& y, SpamWork& wk, SpamState& dy) {
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (long i = 0; i < n; ++i) {
     double gxx = 0, gxy = 0, gyx = 0, gyy = 0;  // g_ab = dv_a/dx_b
-    for (std::uint32_t k = wk.pairs.start[i]; k < wk.pairs.start[i + 1]; ++k) {
+    for (std::uint32_t k = wk.pairs.first(i); k < wk.pairs.last(i); ++k) {
       const std::size_t j = wk.pairs.b[k];
       const double s = -m * wk.pairs.F[k] / (0.5 * (wk.rho[i] + wk.rho[j]));
       const Vec2 vij = y.v[i] - y.v[j];

@@ -33,16 +33,16 @@ struct SpamWork {
       W = kernel.W(r, h);
       F = kernel.F(r, h);
     });
-    if (f.size() < pairs.pairs()) {
-      f.resize(pairs.pairs(), Vec2::Zero());
-      tau.resize(pairs.pairs(), 0.0);
+    if (f.size() < pairs.slots()) {
+      f.resize(pairs.slots(), Vec2::Zero());
+      tau.resize(pairs.slots(), 0.0);
     }
   }
 
   SpamParams params;
   Lucy kernel;
   CellList2D cells;
-  PairList pairs;            // pairs of particle i: [pairs.start[i], pairs.start[i + 1])
+  PairList pairs;            // pairs of particle i: k = pairs.first(i) .. pairs.last(i) - 1
   double w0 = 0;             // w(0), the self term of the sums
   std::vector<Vec2> f;       // pair acceleration m (S_ij . grad_i w_ij) before (and after) torque scaling
   std::vector<double> tau;   // pair torque m (d x f): Ldot_ij of Sec. VIII

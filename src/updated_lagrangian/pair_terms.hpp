@@ -59,6 +59,7 @@ auto select_terms(const GrayOptions& o, F&& f) {
 /// Per-particle intermediates owned by the terms that need them.
 struct GrayScratch {
   std::vector<Tensor2> sigma_over_rho2, R;  ///< R only with the artificial stress
+  std::vector<double> volume;               ///< m / rho
   std::vector<double> rho_sum;              ///< only with summation density
 };
 
@@ -78,7 +79,6 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
   const auto& m = body.m;
   auto& rho = body.rho;
   const auto& S = body.S;
-  const auto& start = pairs.start;
   const auto& nb = pairs.b;
   const auto& dx = pairs.dx;
   const auto& Wab = pairs.W;
@@ -93,7 +93,7 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
     for (std::size_t a = 0; a < n; ++a) {
       Vec2 dv_avg = Vec2::Zero();
       double rs = 0.0;
-      for (std::uint32_t k = start[a]; k < start[a + 1]; ++k) {
+      for (std::uint32_t k = pairs.first(a); k < pairs.last(a); ++k) {
         const std::uint32_t b = nb[k];
         if constexpr (Terms::xsph) dv_avg += m[b] / (0.5 * (rho[a] + rho[b])) * (v[b] - v[a]) * Wab[k];
         if constexpr (Terms::summation) rs += m[b] * Wab[k];
@@ -105,11 +105,14 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
   }
   const std::vector<Vec2>& vhat = Terms::xsph ? out.vhat : v;
 
-  // Per-particle stress terms: sigma/rho^2 and the artificial stress R (6.1)-(6.7).
+  // Per-particle stress terms: sigma/rho^2, the artificial stress R (6.1)-(6.7), and m/rho (the volume of the
+  // velocity gradient's sum, divided once per particle instead of once per pair: the same quotient).
+  auto& volume = scratch.volume;
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
     const Tensor2 sigma = S[a] - linear_eos_pressure(rho[a], p.rho0, p.c0) * Tensor2::Identity();
     sigma_over_rho2[a] = sigma / (rho[a] * rho[a]);
+    volume[a] = m[a] / rho[a];
     if constexpr (Terms::artificial_stress) R[a] = artificial_stress(sigma, rho[a], p.eps_artificial);
   }
 
@@ -122,7 +125,7 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
     double drho = 0.0;
     Tensor2 grad_v = Tensor2::Zero();  // grad_v(i, j) = d vhat_i / d x_j
     const Tensor2 Aa = sigma_over_rho2[a];
-    for (std::uint32_t k = start[a]; k < start[a + 1]; ++k) {
+    for (std::uint32_t k = pairs.first(a); k < pairs.last(a); ++k) {
       const std::uint32_t b = nb[k];
       const Vec2 gW = dx[k] * Fab[k];  // grad_a W_ab (3.2)
       Tensor2 M = Aa + sigma_over_rho2[b];
@@ -139,7 +142,7 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
       acc += m[b] * (M * gW);
       const Vec2 vab = vhat[a] - vhat[b];
       if constexpr (!Terms::summation) drho += m[b] * vab.dot(gW);
-      grad_v.noalias() -= (m[b] / rho[b]) * vab * gW.transpose();
+      grad_v.noalias() -= volume[b] * vab * gW.transpose();
     }
     const Motion kind = body.motion[a];
     out.dv[a] = kind == Motion::Free ? acc : kind == Motion::Driven ? body.drive[a] : Vec2::Zero();

@@ -52,7 +52,7 @@ RingsRunResult run_rings(const RingsRunSpec& s,
     double dmin = std::numeric_limits<double>::infinity();
     for (std::size_t a = 0; a < nl; ++a) {
       if (L.f.label[a] != L.main) continue;
-      for (std::uint32_t k = pairs.start[a]; k < pairs.start[a + 1]; ++k) {
+      for (std::uint32_t k = pairs.first(a); k < pairs.last(a); ++k) {
         const std::uint32_t b = pairs.b[k];
         if (b >= nl && R.f.label[b] == R.main && pairs.W[k] > 0) dmin = std::min(dmin, pairs.dx[k].norm());
       }

@@ -171,8 +171,10 @@ SlabRunResult run_slab(const SlabRunSpec& s, const SlabObserver& on_sample, cons
     double closest = std::numeric_limits<double>::infinity();
     for (std::size_t a = 0; a < body.size(); ++a) {
       if (body.motion[a] != sph::Motion::Free) continue;
-      for (std::uint32_t k = pairs.start[a]; k < pairs.start[a + 1]; ++k)
-        if (body.motion[pairs.b[k]] == sph::Motion::Free) closest = std::min(closest, pairs.dx[k].norm());
+      for (std::uint32_t k = pairs.start[a]; k < pairs.start[a + 1]; ++k) {  // every candidate (the box is not periodic)
+        const std::uint32_t c = pairs.cand[k];
+        if (body.motion[c] == sph::Motion::Free) closest = std::min(closest, (body.x[a] - body.x[c]).norm());
+      }
     }
     const auto gap = columns.widest(body);
     r.trace.push_back({solver.time(), ext, ext / slab.length, sph::kinetic_energy(solver), solver.elastic_energy(), nk.width, nk.x,
