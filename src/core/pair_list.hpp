@@ -8,9 +8,11 @@
 // (grad_a W_ab = (x_a - x_b) F_ab), computed by the formulation's `geometry(r, W, F)`, which must give
 // W = F = 0 beyond the support, and keeps the pairs inside the support, in candidate order: a pair with
 // W = F = 0 adds exactly nothing to any sum, so the passes skip it without changing a bit. Every pass of an
-// evaluation reads the cache, so the kernel is evaluated once per pair per update. Each pair appears twice (a->b and b->a): passes gather into their own particle
-// only, which parallelises over particles without atomics. No allocation once the arrays have reached
-// their size.
+// evaluation reads the cache, so the kernel is evaluated once per pair per update. A full list holds each
+// pair twice (a->b and b->a): passes gather into their own particle only, which parallelises over
+// particles without atomics (SPAM); a half list (`half`) holds each pair once, for passes that add a pair
+// to both particles (Gray's scheme: half the pair work). No allocation once the arrays have reached their
+// size.
 #pragma once
 
 #include <cstdint>
@@ -32,6 +34,9 @@ struct PairList {
   std::vector<double> F;             ///< F_ab with grad_a W_ab = dx F_ab (Gray et al. 2001 eq 3.2)
   std::vector<std::uint32_t> active; ///< number of pairs inside the support, per particle
   long collections = 0;              ///< how often the candidates were re-collected (diagnostics)
+  /// Every pair once, in the row of its lower index (b > a), for formulations that add a pair's terms to
+  /// both of its particles; otherwise every pair twice (a->b and b->a), for those that gather.
+  bool half = false;
 
   std::uint32_t first(std::size_t a) const { return start[a]; }
   std::uint32_t last(std::size_t a) const { return start[a] + active[a]; }
@@ -60,6 +65,8 @@ struct PairList {
     return moved;
   }
 
+  bool keep(long a, std::size_t j) const { return !half || static_cast<long>(j) > a; }
+
   void collect(const CellList2D& cells, const std::vector<Vec2>& x, double radius) {
     const long n = static_cast<long>(x.size());
     start.resize(n + 1);
@@ -67,7 +74,7 @@ struct PairList {
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long a = 0; a < n; ++a) {
       std::uint32_t count = 0;
-      cells.for_each_neighbour(x, a, radius, [&](std::size_t, const Vec2&, double) { ++count; });
+      cells.for_each_neighbour(x, a, radius, [&](std::size_t j, const Vec2&, double) { count += keep(a, j); });
       start[a + 1] = count;
     }
     for (long a = 0; a < n; ++a) start[a + 1] += start[a];
@@ -81,7 +88,9 @@ struct PairList {
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long a = 0; a < n; ++a) {
       std::uint32_t k = start[a];
-      cells.for_each_neighbour(x, a, radius, [&](std::size_t j, const Vec2&, double) { cand[k++] = static_cast<std::uint32_t>(j); });
+      cells.for_each_neighbour(x, a, radius, [&](std::size_t j, const Vec2&, double) {
+        if (keep(a, j)) cand[k++] = static_cast<std::uint32_t>(j);
+      });
     }
     x_collected_ = x;
     ++collections;

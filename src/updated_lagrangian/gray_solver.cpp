@@ -28,8 +28,8 @@ GraySolver::GraySolver(ElasticBody& body, const GrayParameters& params, const Gr
   resize_fields(r1_, n);
   scratch_.sigma_over_rho2.assign(n, Tensor2::Zero());
   scratch_.volume.assign(n, 0.0);
+  pairs_.half = true;  // every pair once: pair_terms.hpp adds it to both particles
   if (o_.artificial_stress) scratch_.R.assign(n, Tensor2::Zero());
-  if (o_.summation_density) scratch_.rho_sum.assign(n, 0.0);
   rebuild_pairs();
 }
 

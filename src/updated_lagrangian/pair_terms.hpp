@@ -8,6 +8,9 @@
 // is not compiled into the loops. Included by gray_solver.cpp only.
 #pragma once
 
+#include <omp.h>
+
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 #include <vector>
@@ -56,11 +59,26 @@ auto select_terms(const GrayOptions& o, F&& f) {
   return o.artificial_stress ? with_xs(std::true_type{}) : with_xs(std::false_type{});
 }
 
-/// Per-particle intermediates owned by the terms that need them.
+/// Per-particle intermediates owned by the terms that need them, and the partial sums of each thread: every
+/// pair is evaluated once, for both of its particles, so a thread adds into its own arrays and one pass
+/// sums them (the order of the sums then depends on the number of threads, at round-off).
 struct GrayScratch {
   std::vector<Tensor2> sigma_over_rho2, R;  ///< R only with the artificial stress
   std::vector<double> volume;               ///< m / rho
-  std::vector<double> rho_sum;              ///< only with summation density
+  struct Partial {
+    std::vector<Vec2> dv_avg, acc;          ///< XSPH sum, acceleration sum
+    std::vector<double> rho_sum, drho;      ///< summation density, continuity sum
+    std::vector<Tensor2> grad_v;            ///< velocity gradient sum
+  };
+  std::vector<Partial> partial;             ///< one per thread
+  void size_for(std::size_t n, int threads) {
+    if (partial.size() < static_cast<std::size_t>(threads)) partial.resize(threads);
+    for (auto& q : partial)
+      if (q.acc.size() != n) {
+        q.dv_avg.assign(n, Vec2::Zero()); q.acc.assign(n, Vec2::Zero());
+        q.rho_sum.assign(n, 0.0); q.drho.assign(n, 0.0); q.grad_v.assign(n, Tensor2::Zero());
+      }
+  }
 };
 
 inline double ipow(double x, int n) {
@@ -70,7 +88,8 @@ inline double ipow(double x, int n) {
 }
 
 /// The rates of the body's current state into `out`. With summation density it also sets body.rho.
-/// h = h_over_dp dp, W_dp = W(dp, h) (the normalisation of f = W / W(dp)).
+/// h = h_over_dp dp, W_dp = W(dp, h) (the normalisation of f = W / W(dp)). `pairs` holds every pair once
+/// (PairList::half): b > a in a's row.
 template <class Terms>
 void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const CubicSpline& kernel, double h, double W_dp,
                          const PairList& pairs, GrayScratch& scratch, GrayRates& out) {
@@ -85,29 +104,51 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
   const auto& Fab = pairs.F;
   auto& sigma_over_rho2 = scratch.sigma_over_rho2;
   auto& R = scratch.R;
+  auto& volume = scratch.volume;
+  scratch.size_for(n, omp_get_max_threads());
+  auto& partial = scratch.partial;
 
   // Pass 1 (only if a term needs it): XSPH velocity (3.6) and summation density, from the densities
   // of the previous evaluation.
+  int threads = 1;  // the team that filled the partial sums
   if constexpr (Terms::xsph || Terms::summation) {
+#pragma omp parallel
+    {
+#pragma omp single
+      threads = omp_get_num_threads();
+      auto& q = partial[omp_get_thread_num()];
+      if constexpr (Terms::xsph) std::fill(q.dv_avg.begin(), q.dv_avg.end(), Vec2::Zero());
+      if constexpr (Terms::summation) std::fill(q.rho_sum.begin(), q.rho_sum.end(), 0.0);
+#pragma omp for schedule(static)
+      for (std::size_t a = 0; a < n; ++a)
+        for (std::uint32_t k = pairs.first(a); k < pairs.last(a); ++k) {
+          const std::uint32_t b = nb[k];
+          if constexpr (Terms::xsph) {
+            const Vec2 w = (v[b] - v[a]) * (Wab[k] / (0.5 * (rho[a] + rho[b])));
+            q.dv_avg[a] += m[b] * w;
+            q.dv_avg[b] -= m[a] * w;
+          }
+          if constexpr (Terms::summation) {
+            q.rho_sum[a] += m[b] * Wab[k];
+            q.rho_sum[b] += m[a] * Wab[k];
+          }
+        }
+    }
 #pragma omp parallel for schedule(static)
     for (std::size_t a = 0; a < n; ++a) {
-      Vec2 dv_avg = Vec2::Zero();
-      double rs = 0.0;
-      for (std::uint32_t k = pairs.first(a); k < pairs.last(a); ++k) {
-        const std::uint32_t b = nb[k];
-        if constexpr (Terms::xsph) dv_avg += m[b] / (0.5 * (rho[a] + rho[b])) * (v[b] - v[a]) * Wab[k];
-        if constexpr (Terms::summation) rs += m[b] * Wab[k];
+      Vec2 dv_avg = partial[0].dv_avg[a];
+      double rs = partial[0].rho_sum[a];
+      for (int t = 1; t < threads; ++t) {
+        if constexpr (Terms::xsph) dv_avg += partial[t].dv_avg[a];
+        if constexpr (Terms::summation) rs += partial[t].rho_sum[a];
       }
       out.vhat[a] = Terms::xsph ? Vec2(v[a] + p.eps_xsph * dv_avg) : v[a];
-      if constexpr (Terms::summation) scratch.rho_sum[a] = rs + m[a] * kernel.W(0.0, h);
+      if constexpr (Terms::summation) rho[a] = rs + m[a] * kernel.W(0.0, h);
     }
-    if constexpr (Terms::summation) rho = scratch.rho_sum;
   }
   const std::vector<Vec2>& vhat = Terms::xsph ? out.vhat : v;
 
-  // Per-particle stress terms: sigma/rho^2, the artificial stress R (6.1)-(6.7), and m/rho (the volume of the
-  // velocity gradient's sum, divided once per particle instead of once per pair: the same quotient).
-  auto& volume = scratch.volume;
+  // Per-particle stress terms: sigma/rho^2, the artificial stress R (6.1)-(6.7), and m/rho.
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
     const Tensor2 sigma = S[a] - linear_eos_pressure(rho[a], p.rho0, p.c0) * Tensor2::Identity();
@@ -116,33 +157,60 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
     if constexpr (Terms::artificial_stress) R[a] = artificial_stress(sigma, rho[a], p.eps_artificial);
   }
 
-  // Pass 2: acceleration (3.1)/(3.12), continuity (3.8), velocity gradient (3.10), stress rate (2.3).
+  // Pass 2: acceleration (3.1)/(3.12), continuity (3.8), velocity gradient (3.10), each pair once: with
+  // gW = grad_a W_ab = -grad_b W_ba and the symmetric M_ab, the pair adds m_b M gW to a and -m_a M gW to b,
+  // m_b vab.gW and m_a vab.gW to the densities, and -V_b vab gW^T, -V_a vab gW^T to the gradients.
   const double eta2 = 0.01 * h * h, inv_Wdp = 1.0 / W_dp;
   const int nart = p.n_artificial;
+#pragma omp parallel
+  {
+#pragma omp single
+    threads = omp_get_num_threads();
+    auto& q = partial[omp_get_thread_num()];
+    std::fill(q.acc.begin(), q.acc.end(), Vec2::Zero());
+    if constexpr (!Terms::summation) std::fill(q.drho.begin(), q.drho.end(), 0.0);
+    std::fill(q.grad_v.begin(), q.grad_v.end(), Tensor2::Zero());
+#pragma omp for schedule(static)
+    for (std::size_t a = 0; a < n; ++a) {
+      const Tensor2 Aa = sigma_over_rho2[a];
+      for (std::uint32_t k = pairs.first(a); k < pairs.last(a); ++k) {
+        const std::uint32_t b = nb[k];
+        const Vec2 gW = dx[k] * Fab[k];  // grad_a W_ab (3.2)
+        Tensor2 M = Aa + sigma_over_rho2[b];
+        if constexpr (Terms::artificial_stress) M += (R[a] + R[b]) * ipow(Wab[k] * inv_Wdp, nart);
+        if constexpr (Terms::viscosity) {
+          const double vr = (v[a] - v[b]).dot(dx[k]);
+          if (vr < 0.0) {
+            // Monaghan's Pi_ab >= 0 acts as a pressure, so it enters the stress sum with a minus sign.
+            const double mu_ab = h * vr / (dx[k].squaredNorm() + eta2);
+            const double Pi = (-p.alpha * p.c0 * mu_ab + p.beta * mu_ab * mu_ab) / (0.5 * (rho[a] + rho[b]));
+            M.diagonal().array() -= Pi;
+          }
+        }
+        const Vec2 f = M * gW;
+        q.acc[a] += m[b] * f;
+        q.acc[b] -= m[a] * f;
+        const Vec2 vab = vhat[a] - vhat[b];
+        if constexpr (!Terms::summation) {
+          const double d = vab.dot(gW);
+          q.drho[a] += m[b] * d;
+          q.drho[b] += m[a] * d;
+        }
+        const Tensor2 G = vab * gW.transpose();
+        q.grad_v[a].noalias() -= volume[b] * G;
+        q.grad_v[b].noalias() -= volume[a] * G;
+      }
+    }
+  }
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
-    Vec2 acc = Vec2::Zero();
-    double drho = 0.0;
-    Tensor2 grad_v = Tensor2::Zero();  // grad_v(i, j) = d vhat_i / d x_j
-    const Tensor2 Aa = sigma_over_rho2[a];
-    for (std::uint32_t k = pairs.first(a); k < pairs.last(a); ++k) {
-      const std::uint32_t b = nb[k];
-      const Vec2 gW = dx[k] * Fab[k];  // grad_a W_ab (3.2)
-      Tensor2 M = Aa + sigma_over_rho2[b];
-      if constexpr (Terms::artificial_stress) M += (R[a] + R[b]) * ipow(Wab[k] * inv_Wdp, nart);
-      if constexpr (Terms::viscosity) {
-        const double vr = (v[a] - v[b]).dot(dx[k]);
-        if (vr < 0.0) {
-          // Monaghan's Pi_ab >= 0 acts as a pressure, so it enters the stress sum with a minus sign.
-          const double mu_ab = h * vr / (dx[k].squaredNorm() + eta2);
-          const double Pi = (-p.alpha * p.c0 * mu_ab + p.beta * mu_ab * mu_ab) / (0.5 * (rho[a] + rho[b]));
-          M.diagonal().array() -= Pi;
-        }
-      }
-      acc += m[b] * (M * gW);
-      const Vec2 vab = vhat[a] - vhat[b];
-      if constexpr (!Terms::summation) drho += m[b] * vab.dot(gW);
-      grad_v.noalias() -= volume[b] * vab * gW.transpose();
+    Vec2 acc = partial[0].acc[a];
+    double drho = partial[0].drho[a];
+    Tensor2 grad_v = partial[0].grad_v[a];  // grad_v(i, j) = d vhat_i / d x_j
+    for (int t = 1; t < threads; ++t) {
+      acc += partial[t].acc[a];
+      if constexpr (!Terms::summation) drho += partial[t].drho[a];
+      grad_v += partial[t].grad_v[a];
     }
     const Motion kind = body.motion[a];
     out.dv[a] = kind == Motion::Free ? acc : kind == Motion::Driven ? body.drive[a] : Vec2::Zero();
