@@ -55,10 +55,7 @@ struct TlBody2D {
 
   /// The gradient g = [X u1, Y u1, X u2, Y u2] (eq 5.9).
   void gradient() {
-    spmv(m.X, u[0], g[0]);
-    spmv(m.Y, u[0], g[1]);
-    spmv(m.X, u[1], g[2]);
-    spmv(m.Y, u[1], g[3]);
+    gradient_2d(m, u[0], u[1], g);
   }
   Tensor2 F(int i) const {
     Tensor2 F;

@@ -10,7 +10,7 @@ void HourglassControl::add(const TlBody2D& b, int c, Eigen::VectorXd& a) const {
   const int* inner = K_.innerIndexPtr();
   const double* val = K_.valuePtr();
   const int nr = b.nr;
-#pragma omp parallel for schedule(static) if (nr > 20000)
+#pragma omp parallel for schedule(static) if (nr > 2000)
   for (int i = 0; i < nr; ++i) {
     double s = 0;
     for (int e = outer[i]; e < outer[i + 1]; ++e) {

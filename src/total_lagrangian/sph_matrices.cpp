@@ -88,4 +88,58 @@ void spmv(const SparseMatrix& A, const Eigen::VectorXd& v, Eigen::VectorXd& y) {
   }
 }
 
+namespace {
+// Rows in parallel from this size: a row of the 2D matrices holds ~20-40 entries, so a few thousand rows
+// outweigh the fork/join.
+constexpr int kParallelRows2D = 2000;
+
+void require_shared_pattern(const SphMatrices2D& m) {
+  if (m.X.nonZeros() != m.Y.nonZeros() || m.X.rows() != m.Y.rows() || !m.X.isCompressed() || !m.Y.isCompressed())
+    throw std::invalid_argument("2D SPH matrices: X and Y must share one compressed pattern (build_sph_matrices_2d)");
+}
+}  // namespace
+
+void gradient_2d(const SphMatrices2D& m, const Eigen::VectorXd& u0, const Eigen::VectorXd& u1, Eigen::VectorXd (&g)[4]) {
+  require_shared_pattern(m);
+  const int n = static_cast<int>(m.X.rows());
+  const int* outer = m.X.outerIndexPtr();
+  const int* inner = m.X.innerIndexPtr();
+  const double* vx = m.X.valuePtr();
+  const double* vy = m.Y.valuePtr();
+#pragma omp parallel for schedule(static) if (n > kParallelRows2D)
+  for (int p = 0; p < n; ++p) {
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    for (int k = outer[p]; k < outer[p + 1]; ++k) {
+      const int q = inner[k];
+      s0 += vx[k] * u0[q];
+      s1 += vy[k] * u0[q];
+      s2 += vx[k] * u1[q];
+      s3 += vy[k] * u1[q];
+    }
+    g[0][p] = s0; g[1][p] = s1; g[2][p] = s2; g[3][p] = s3;
+  }
+}
+
+void divergence_2d(const SphMatrices2D& m, const Eigen::VectorXd (&P)[4], Eigen::VectorXd& a0, Eigen::VectorXd& a1) {
+  require_shared_pattern(m);
+  const int n = static_cast<int>(m.X.rows());
+  const int* outer = m.X.outerIndexPtr();
+  const int* inner = m.X.innerIndexPtr();
+  const double* vx = m.X.valuePtr();
+  const double* vy = m.Y.valuePtr();
+#pragma omp parallel for schedule(static) if (n > kParallelRows2D)
+  for (int p = 0; p < n; ++p) {
+    double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+    for (int k = outer[p]; k < outer[p + 1]; ++k) {
+      const int q = inner[k];
+      x0 += vx[k] * P[0][q];
+      y0 += vy[k] * P[1][q];
+      x1 += vx[k] * P[2][q];
+      y1 += vy[k] * P[3][q];
+    }
+    a0[p] = x0 + y0;
+    a1[p] = x1 + y1;
+  }
+}
+
 }  // namespace sph

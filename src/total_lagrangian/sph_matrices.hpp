@@ -61,6 +61,13 @@ SphMatrices2D build_sph_matrices_2d(const K& k, const std::vector<Vec2>& x, cons
 /// y = A v, rows in parallel (OpenMP); y must already have A.rows() entries (no allocation).
 void spmv(const SparseMatrix& A, const Eigen::VectorXd& v, Eigen::VectorXd& y);
 
+/// The 2D step's products in one pass over the rows each, reading the pattern X and Y share (built together,
+/// build_sph_matrices_2d) once instead of once per product: g = [X u0, Y u0, X u1, Y u1] (eq 5.9) and
+/// a0 = X P0 + Y P1, a1 = X P2 + Y P3 (eq 5.6). Every sum runs in the order of spmv, so the results are the
+/// same bits as the separate products. Outputs must already have their sizes (no allocation).
+void gradient_2d(const SphMatrices2D& m, const Eigen::VectorXd& u0, const Eigen::VectorXd& u1, Eigen::VectorXd (&g)[4]);
+void divergence_2d(const SphMatrices2D& m, const Eigen::VectorXd (&P)[4], Eigen::VectorXd& a0, Eigen::VectorXd& a1);
+
 template <class K>
 SphMatrices2D build_sph_matrices_2d(const K& k, const std::vector<Vec2>& x, const std::vector<double>& dV) {
   if (x.size() != dV.size()) throw std::invalid_argument("build_sph_matrices_2d: one volume per particle");

@@ -40,16 +40,14 @@ class TlStepperOf final : public TlStepper2D {
     closure_.template ghost_displacements<Law>(b, b.t);
     b.gradient();
     const int nr = b.nr;
-#pragma omp parallel for schedule(static) if (nr > 20000)
+#pragma omp parallel for schedule(static) if (nr > 2000)
     for (int i = 0; i < nr; ++i) {
       const Tensor2 P = Law::P(b.cfg.lame, b.F(i));
       b.P[0][i] = P(0, 0); b.P[1][i] = P(0, 1); b.P[2][i] = P(1, 0); b.P[3][i] = P(1, 1);
     }
     closure_.ghost_stresses(b, b.t);
+    divergence_2d(b.m, b.P, b.a[0], b.a[1]);  // both components first: the passes below read only their own
     for (int c = 0; c < 2; ++c) {
-      spmv(b.m.X, b.P[2 * c], b.a[c]);
-      spmv(b.m.Y, b.P[2 * c + 1], b.tmp);
-      b.a[c] += b.tmp;
       closure_.boundary_forces(b, c, b.a[c]);
       if constexpr (Hourglass) hourglass_.add(b, c, b.a[c]);
       b.a[c] /= b.cfg.rho;
