@@ -1,7 +1,10 @@
 // Stability stress test of the Gray et al. 2001 scheme on the rings and the slab (target G-stab-rs, beyond the
 // paper; the plate has G-stab): (1) the time-step factor swept to the blow-up point on both scenes, with
 // the artificial stress (eps = 0.3) and without; (2) the ring collision at twice the paper's speed
-// (0.118 each, relative 0.236), eps = 0.3.
+// (0.118 each, relative 0.236), eps = 0.3; (3) the margin of the scheme's default factor below the limits, and
+// the default justified: the whole collision (rings dp) and the slab to parting (slab dp), eps = 0.3, again at
+// half the step, must give the quantities G-fig6 and G-fig8 check (restitution, fragments, parting time)
+// unchanged within those checks' tolerances.
 //
 // CHOSEN parameters: rings dp = 0.2 over t = 80 (the first half of the impact, where the rings are most
 // compressed); slab dp = 0.064 over t = 300 (strain 0.075, well into the plastic range); the fast collision
@@ -20,6 +23,7 @@ int main(int argc, char** argv) {
   sph::Driver d("gray2001_rings_slab_stability", "G-stab-rs", "Stability of the rings and the slab: time-step sweep, fast collision");
   double rings_dp = 0.2, slab_dp = 0.064, rings_time = 80, slab_time = 300, fast_dp = 0.1, fast_speed = 0.118;
   std::vector<double> cfls{0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0};
+  double cfl = sph::GrayParameters{}.cfl;  // the scheme's default (parameters.hpp), used by the scene drivers
   d.param("rings-dp", rings_dp, "particle spacing of the rings sweep");
   d.param("slab-dp", slab_dp, "particle spacing of the slab sweep");
   d.param("rings-time", rings_time, "simulated time of each rings sweep run");
@@ -27,6 +31,7 @@ int main(int argc, char** argv) {
   d.param("cfl-values", cfls, "time-step factors of the sweep");
   d.param("fast-dp", fast_dp, "particle spacing of the fast collision");
   d.param("fast-speed", fast_speed, "speed of each ring in the fast collision (paper: 0.059)");
+  d.param("cfl", cfl, "the factor of the scene drivers: the margins and the halved-step runs refer to it");
 
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("fast-dp")) fast_dp = 0.2;
@@ -72,6 +77,40 @@ int main(int argc, char** argv) {
       }
       d.value("rings_largest_stable_cfl_" + e, stable_rings, "largest factor of the sweep that neither blew up nor broke a ring the first run kept whole");
       d.value("slab_largest_stable_cfl_" + e, stable_slab, "largest factor of the sweep that neither blew up nor parted a slab the first run kept whole");
+      d.value("rings_stability_margin_" + e, stable_rings / cfl, "largest stable factor / the drivers' factor (--cfl)");
+      d.value("slab_stability_margin_" + e, stable_slab / cfl, "largest stable factor / the drivers' factor (--cfl)");
+    }
+    // The drivers' factor and half of it, eps = 0.3 (the slab's runs to parting only in full runs: ~1 min).
+    auto halved = d.csv("halved_dt.csv", {"scene", "cfl", "dt", "steps", "restitution", "max_fragments", "fracture_time", "message"});
+    scenes::RingsRunResult rings_at[2];
+    scenes::SlabRunResult slab_at[2];
+    for (int k = 0; k < 2; ++k) {
+      const double f = k == 0 ? cfl : 0.5 * cfl;
+      scenes::RingsRunSpec rs;
+      rs.rings.dp = rings_dp;
+      rs.rings.gap = std::max(0.2, 2.0 * rings_dp);
+      rs.scheme.cfl = f;
+      rings_at[k] = scenes::run_rings(rs, {}, "rings at cfl " + std::to_string(f));
+      const auto& r = rings_at[k];
+      if (!r.blow_up.empty()) throw std::runtime_error("rings at cfl " + std::to_string(f) + ": " + r.blow_up);
+      halved.row("rings", f, r.dt, r.steps, r.restitution, r.max_fragments, r.fracture_time, r.blow_up);
+      if (d.quick()) continue;
+      scenes::SlabRunSpec ss;
+      ss.slab.dp = slab_dp;
+      ss.scheme.cfl = f;
+      slab_at[k] = scenes::run_slab(ss, {}, "slab at cfl " + std::to_string(f));
+      const auto& q = slab_at[k];
+      if (!q.blow_up.empty()) throw std::runtime_error("slab at cfl " + std::to_string(f) + ": " + q.blow_up);
+      halved.row("slab", f, q.dt, q.steps, NAN, NAN, q.fracture_time, q.blow_up);
+    }
+    d.value("rings_halved_dt_restitution_change", std::abs(rings_at[1].restitution - rings_at[0].restitution),
+            "|restitution(cfl / 2) - restitution(cfl)|, eps = 0.3");
+    d.value("rings_halved_dt_fragments_change", std::abs(double(rings_at[1].max_fragments) - double(rings_at[0].max_fragments)),
+            "|most fragments(cfl / 2) - most fragments(cfl)|, eps = 0.3");
+    if (!d.quick()) {
+      const double t0 = slab_at[0].fracture_time, t1 = slab_at[1].fracture_time;  // -1: did not part by t_max
+      d.value("slab_halved_dt_fracture_time_change", t0 > 0 && t1 > 0 ? std::abs(t1 / t0 - 1.0) : NAN,
+              "|parting time(cfl / 2) / parting time(cfl) - 1|, eps = 0.3 (NaN unless both parted)");
     }
     // The fast collision.
     scenes::RingsRunSpec fs;
