@@ -84,3 +84,24 @@ TEST(KernelConstants, FusedWAndFEqualTheSeparateCalls) {
     EXPECT_DOUBLE_EQ(F, k.F(r, 1.0)) << r;
   }
 }
+
+// Kernel::at(h) precomputes W_and_F's constants: the pair refreshes rely on it giving the same bits.
+TEST(KernelConstants, AtFixedHGivesTheBitsOfWAndF) {
+  const sph::CubicSpline k(2);
+  const sph::Lucy lucy(2);
+  for (double h : {0.15, 1.0, 3.0}) {
+    const auto at = k.at(h);
+    const auto lat = lucy.at(h);
+    for (double q : {0.0, 1e-14, 0.3, 0.99, 1.0, 1.7, 2.0, 2.5}) {
+      double W, F, W2, F2;
+      k.W_and_F(q * h, h, W, F);
+      at(q * h, W2, F2);
+      EXPECT_EQ(W, W2) << h << " " << q;
+      EXPECT_EQ(F, F2) << h << " " << q;
+      lucy.W_and_F(q * h, h, W, F);
+      lat(q * h, W2, F2);
+      EXPECT_EQ(W, W2) << h << " " << q;
+      EXPECT_EQ(F, F2) << h << " " << q;
+    }
+  }
+}

@@ -189,6 +189,20 @@ class Kernel {
     W = c * Shape::w(q);
     F = (q < 1e-12) ? c * inv_h * inv_h * Shape::d2w(0.0) : c * inv_h * inv_h * Shape::dw(q) / q;
   }
+  /// W_and_F at one smoothing length with its constants computed once (the same operations on the same
+  /// values, so the same bits): the pair-list refreshes call it for every candidate pair.
+  struct AtH {
+    double inv_h, c, cF;
+    void operator()(double r, double& W, double& F) const {
+      const double q = r * inv_h;
+      W = c * Shape::w(q);
+      F = (q < 1e-12) ? cF * Shape::d2w(0.0) : cF * Shape::dw(q) / q;
+    }
+  };
+  AtH at(double h) const {
+    const double inv_h = 1.0 / h, c = sigma_ / hpow(h);
+    return {inv_h, c, c * inv_h * inv_h};
+  }
   /// F with grad_a W_ab = r_ab F_ab (Gray et al. 2001 eq 3.2): dW/dr / r, finite at r -> 0.
   double F(double r, double h) const {
     const double q = r / h;

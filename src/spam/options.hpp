@@ -67,6 +67,7 @@ struct SpamParams {
   double viscosity_length = 1.0;           // dx = the lattice spacing
   double closest_distance = 0.7;           // CHOSEN: 70% of the lattice spacing
   double gauss_floor = 1e-12;              // Gauss multipliers off while D < floor * m R^2 (rigid rotation)
+  double skin_over_h = 0.2;                // Verlet skin of the pair list / h (as Gray's scheme; 0: search every evaluation)
   Box2 box;                                // cell-list box; periodic flags make a periodic crystal
 };
 

@@ -1,9 +1,10 @@
 // Scratch storage of one SPAM evaluation: the neighbour pairs of every particle in the shared pair storage
 // (core/pair_list.hpp) with their displacement d = x_i - x_j, weight w_ij and F_ij = w'(r)/r (so
 // grad_i w_ij = d F_ij), gathered once per derivative evaluation and reused by every group of terms; plus the
-// per-particle and per-pair intermediates. The pair list has no skin: SPAM searches at every evaluation, so
-// every sum runs over the same pairs, in the same order, as a fresh cell-list search. Nothing allocates in
-// the time loop once the arrays have reached their size.
+// per-particle and per-pair intermediates. The pair list keeps its candidates within support + skin until a
+// particle has moved half the skin (SpamParams::skin_over_h): the sums run over exactly the pairs inside the
+// support, in the order of the last search (with skin 0: of a fresh search at every evaluation). Nothing
+// allocates in the time loop once the arrays have reached their size.
 #pragma once
 
 #include <vector>
@@ -18,21 +19,17 @@ namespace sph {
 
 struct SpamWork {
   SpamWork(const SpamParams& p, std::size_t n)
-      : params(p), kernel(2), cells(p.box, kernel.support() * p.h) {
+      : params(p), kernel(2), cells(p.box, (kernel.support() + p.skin_over_h) * p.h) {
     rho.assign(n, 0); sumw.assign(n, 0); u.assign(n, Vec2::Zero()); q.assign(n, 0);
     txx.assign(n, 0); tyy.assign(n, 0); txy.assign(n, 0); ldot.assign(n, 0); scale.assign(n, 1);
     w0 = kernel.W(0.0, p.h);
   }
 
-  /// Bins the particles and refreshes the pairs and their geometry. OpenMP over particles. W and F come
-  /// from Kernel::W and Kernel::F (Gray's scheme uses Kernel::W_and_F, which rounds differently in the last
-  /// bit): SPAM keeps the values it had before it moved onto the shared pair list.
+  /// Bins the particles (when the skin is used up) and refreshes the pairs and their geometry. OpenMP over
+  /// particles.
   void gather(const std::vector<Vec2>& x) {
     const double h = params.h;
-    pairs.update(cells, x, kernel.support() * h, 0.0, [this, h](double r, double& W, double& F) {
-      W = kernel.W(r, h);
-      F = kernel.F(r, h);
-    });
+    pairs.update(cells, x, kernel.support() * h, params.skin_over_h * h, kernel.at(h));
     if (f.size() < pairs.slots()) {
       f.resize(pairs.slots(), Vec2::Zero());
       tau.resize(pairs.slots(), 0.0);

@@ -35,8 +35,7 @@ GraySolver::GraySolver(ElasticBody& body, const GrayParameters& params, const Gr
 
 void GraySolver::rebuild_pairs() {
   const double h = h_;
-  pairs_.update(cells_, body_.x, kernel_.support() * h, p_.skin_over_h * h,
-                [this, h](double r, double& W, double& F) { kernel_.W_and_F(r, h, W, F); });
+  pairs_.update(cells_, body_.x, kernel_.support() * h, p_.skin_over_h * h, kernel_.at(h));
 }
 
 const GraySolver::Rates& GraySolver::evaluate_now() {
