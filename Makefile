@@ -2,7 +2,7 @@
 #   make figures   deps -> build -> every driver -> plots -> check against published numbers
 #   make test      declaration check -> deps -> build -> GoogleTest (ctest) -> quick smoke run of every driver
 #                  -> quick check -> the report on the quick results
-# Other targets: make check, make paper, make bench, make deps, make clean, make check-targets, make list-targets.
+# Other targets: make check, make paper, make bench, make bench-peer, make deps, make clean, make check-targets, make list-targets.
 # Make's dependency graph reruns a driver only when its binary changed. Threads: `figures` runs the drivers
 # one at a time, each with OpenMP on all cores (RUN_JOBS=1); `quick` runs two at a time single-threaded, since
 # oversubscribed OpenMP teams spin and run many times slower.
@@ -26,7 +26,7 @@ include experiments/targets.mk
 DONE    = $(foreach t,$(TARGETS),$(RESULTS)/$(t)/.done)
 FIGS    = $(foreach t,$(TARGETS),$(FIGURES)/$(t).png)
 
-.PHONY: all figures test check paper bench deps build configure ctest results plots quick clean help timings \
+.PHONY: all figures test check paper bench bench-peer deps build configure ctest results plots quick clean help timings \
         check-targets list-targets
 .DEFAULT_GOAL := help
 
@@ -126,6 +126,21 @@ bench: deps build
 	@awk '/^#/ {next} { if (seen[FILENAME]++ == 0 && hdr++ > 0) next; print }' \
 	  $(foreach b,$(BENCH_DRIVERS),results/bench/$(b).csv) /dev/null > results/bench.csv
 	@echo "make bench: results/bench.csv"; column -s, -t < results/bench.csv || cat results/bench.csv
+
+# PySPH on its own rings example (Debian python3-pysph; its Depends bring cython3, build-essential and
+# python3-all-dev, which it needs to compile its kernels at the first run) against our rings of the same
+# layout: the same PEER_STEPS, OMP_NUM_THREADS=PEER_THREADS for both, one after the other
+# (tools/bench_peer.py says what is timed). Writes results/bench/peer.csv (a PySPH row, ours, and the row
+# ratio_ours_over_pysph whose particle_steps_per_s is the ratio) and merges it into results/bench.csv.
+PEER_STEPS   ?= 600
+PEER_THREADS ?= 2
+bench-peer: deps configure
+	@dpkg-query -W -f='$${Status}' python3-pysph 2>/dev/null | grep -q 'install ok installed' || { \
+	  echo "make bench-peer: installing python3-pysph"; SUDO=; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends python3-pysph; }
+	cmake --build $(BUILD) --target bench_gray_scenes -j $(JOBS)
+	$(PY) tools/bench_peer.py --steps $(PEER_STEPS) --threads $(PEER_THREADS) --ours $(BIN)/bench_gray_scenes \
+	  --pysph-python $(PY) --out results/bench --bench-csv results/bench.csv
 
 # The reproduction report (HTML; paper/build_report.py says why not LaTeX).
 # The check runs first; a FAIL does not stop the report, which shows it.

@@ -9,7 +9,10 @@
 // Writes <out>/bench_gray_scenes.csv with the columns of results/bench.csv.
 #include <omp.h>
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "frame/driver.hpp"
 #include "core/run_loop.hpp"
@@ -40,58 +43,74 @@ int main(int argc, char** argv) {
   int steps = 200, max_threads = 2;
   d.param("steps", steps, "timed steps per run (after 5 warm-up steps)");
   d.param("max-threads", max_threads, "largest thread count (runs 1 and this)");
+  double cfl = sph::GrayParameters{}.cfl;  // the scheme's default: the step sets how often the pairs are re-collected
+  d.param("cfl", cfl, "time-step factor of every run");
+  std::vector<std::string> scenes{"rings", "plate", "slab"};
+  d.param("scenes", scenes, "scenes to run, comma-separated (make bench-peer: rings)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"rings", "plate", "slab"}));
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("steps")) steps = 5;
     auto out = d.csv("bench_gray_scenes.csv", {"scene", "variant", "particles", "steps", "threads", "wall_s",
                                                "particle_steps_per_s", "error_name", "error"});
+    const auto want = [&](const char* s) { return std::find(scenes.begin(), scenes.end(), s) != scenes.end(); };
+    struct Variant { const char* name; sph::GrayOptions o; };
     std::vector<int> threads{1};
     if (max_threads > 1) threads.push_back(max_threads);
     // Rings, PySPH layout.
-    scenes::RingsSpec rs;
-    rs.dp = 0.05;
-    const sph::GrayParameters rp;  // the scheme's defaults: Sec 7.2's mu = 0.22, h = 1.5 dp
-    const auto rings = scenes::make_rings(rs, rp.rho0);
-    double rate[3] = {0, 0, 0};
-    for (int t : threads) {
-      const auto tm = time_run(rings.body, rp, sph::GrayOptions{}, t, steps);
-      const double r = tm.particles * static_cast<double>(tm.steps) / tm.wall_s;
-      out.row("rings_pysph_layout", "artstress+xsph+visc", tm.particles, tm.steps, t, tm.wall_s, r, "none", NAN);
-      rate[t == 1 ? 1 : 2] = r;
+    if (want("rings")) {
+      scenes::RingsSpec rs;
+      rs.dp = 0.05;
+      sph::GrayParameters rp;  // the scheme's defaults: Sec 7.2's mu = 0.22, h = 1.5 dp
+      rp.cfl = cfl;
+      const auto rings = scenes::make_rings(rs, rp.rho0);
+      double rate[3] = {0, 0, 0};
+      for (int t : threads) {
+        const auto tm = time_run(rings.body, rp, sph::GrayOptions{}, t, steps);
+        const double r = tm.particles * static_cast<double>(tm.steps) / tm.wall_s;
+        out.row("rings_pysph_layout", "artstress+xsph+visc", tm.particles, tm.steps, t, tm.wall_s, r, "none", NAN);
+        rate[t == 1 ? 1 : 2] = r;
+      }
+      if (max_threads > 1) d.value("rings_scaling_1_to_2_threads", rate[2] / rate[1], "throughput ratio");
+      d.value("rings_particle_steps_per_s", rate[max_threads > 1 ? 2 : 1], "on the largest thread count");
     }
-    if (max_threads > 1) d.value("rings_scaling_1_to_2_threads", rate[2] / rate[1], "throughput ratio");
-    d.value("rings_particle_steps_per_s", rate[max_threads > 1 ? 2 : 1], "on the largest thread count");
     // Plate at n = 20, with each option switched off in turn.
-    scenes::PlateSpec ps;
-    ps.dp = 0.1;
-    ps.Vf = 0.01;
-    const sph::GrayParameters pp;
-    const auto plate = scenes::make_plate(ps, pp);
-    struct Variant { const char* name; sph::GrayOptions o; };
-    sph::GrayOptions full, no_as, no_xsph, no_visc, none;
-    no_as.artificial_stress = false;
-    no_xsph.xsph = false;
-    no_visc.viscosity = false;
-    none.artificial_stress = none.xsph = none.viscosity = false;
-    for (const Variant& v : {Variant{"artstress+xsph+visc", full}, Variant{"no artificial stress", no_as},
-                             Variant{"no xsph", no_xsph}, Variant{"no viscosity", no_visc}, Variant{"none", none}})
-      for (int t : threads) {
-        if (t == 1 && v.name != std::string("artstress+xsph+visc")) continue;  // variants: largest count only
-        const auto tm = time_run(plate.body, pp, v.o, t, steps);
-        out.row("plate_n20", v.name, tm.particles, tm.steps, t, tm.wall_s, tm.particles * static_cast<double>(tm.steps) / tm.wall_s,
-                "none", NAN);
-      }
+    if (want("plate")) {
+      scenes::PlateSpec ps;
+      ps.dp = 0.1;
+      ps.Vf = 0.01;
+      sph::GrayParameters pp;
+      pp.cfl = cfl;
+      const auto plate = scenes::make_plate(ps, pp);
+      sph::GrayOptions full, no_as, no_xsph, no_visc, none;
+      no_as.artificial_stress = false;
+      no_xsph.xsph = false;
+      no_visc.viscosity = false;
+      none.artificial_stress = none.xsph = none.viscosity = false;
+      for (const Variant& v : {Variant{"artstress+xsph+visc", full}, Variant{"no artificial stress", no_as},
+                               Variant{"no xsph", no_xsph}, Variant{"no viscosity", no_visc}, Variant{"none", none}})
+        for (int t : threads) {
+          if (t == 1 && v.name != std::string("artstress+xsph+visc")) continue;  // variants: largest count only
+          const auto tm = time_run(plate.body, pp, v.o, t, steps);
+          out.row("plate_n20", v.name, tm.particles, tm.steps, t, tm.wall_s, tm.particles * static_cast<double>(tm.steps) / tm.wall_s,
+                  "none", NAN);
+        }
+    }
     // Slab of Figs 8-10 at the paper's resolution, with and without the plastic return.
-    scenes::SlabSpec ss;
-    ss.dp = 0.016;
-    const sph::GrayParameters sp = scenes::slab_scheme();
-    const auto slab = scenes::make_slab(ss, sp.rho0);
-    sph::GrayOptions plastic = scenes::slab_options(), elastic;
-    for (const Variant& v : {Variant{"artstress+xsph+visc+vonmises", plastic}, Variant{"no plasticity", elastic}})
-      for (int t : threads) {
-        if (t == 1 && !v.o.plasticity) continue;
-        const auto tm = time_run(slab.body, sp, v.o, t, steps);
-        out.row("slab_dp0.016", v.name, tm.particles, tm.steps, t, tm.wall_s, tm.particles * static_cast<double>(tm.steps) / tm.wall_s,
-                "none", NAN);
-      }
+    if (want("slab")) {
+      scenes::SlabSpec ss;
+      ss.dp = 0.016;
+      sph::GrayParameters sp = scenes::slab_scheme();
+      sp.cfl = cfl;
+      const auto slab = scenes::make_slab(ss, sp.rho0);
+      sph::GrayOptions plastic = scenes::slab_options(), elastic;
+      for (const Variant& v : {Variant{"artstress+xsph+visc+vonmises", plastic}, Variant{"no plasticity", elastic}})
+        for (int t : threads) {
+          if (t == 1 && !v.o.plasticity) continue;
+          const auto tm = time_run(slab.body, sp, v.o, t, steps);
+          out.row("slab_dp0.016", v.name, tm.particles, tm.steps, t, tm.wall_s, tm.particles * static_cast<double>(tm.steps) / tm.wall_s,
+                  "none", NAN);
+        }
+    }
   });
 }
