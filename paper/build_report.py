@@ -52,6 +52,19 @@ def table_html(rows):
     return f"<table><tr>{head}</tr>{''.join(body)}</table>"
 
 
+def timings_html(path):
+    """The run-time table of make figures / make test (tools/timings.py), if the results have one."""
+    if not os.path.exists(path):
+        return "<p>No run-time table (results/timings.csv) in these results.</p>"
+    t = pd.read_csv(path, dtype=str, keep_default_na=False)
+    total = sum(float(w) for w in t.wall_s)
+    cols = ["target", "driver", "wall_s", "particle_steps", "particle_steps_per_s", "threads"]
+    head = "".join(f"<th>{c}</th>" for c in cols)
+    body = "".join("<tr>" + "".join(f"<td>{html.escape(str(r[c]))}</td>" for c in cols) + "</tr>" for _, r in t.iterrows())
+    return (f"<p>Wall time of every driver of these results, longest first: {total:.0f} s in all "
+            f"({total / 60:.1f} min; build, plots and check not included).</p><table><tr>{head}</tr>{body}</table>")
+
+
 def report_targets(path):
     """paper/targets.csv's rows in the order of experiments/targets.mk; exits on any mismatch between the two."""
     try:
@@ -103,7 +116,8 @@ note gives the analysis and the reading that does reproduce it, which is itself 
 <p class="summary">{len(check)} checks: {counts.get('PASS', 0)} PASS, {counts.get('DISCREPANCY', 0)} DISCREPANCY,
 {counts.get('FAIL', 0)} FAIL.</p>"""]
     parts.append("<h2>Contents</h2><ul>" + "".join(
-        f'<li><a href="#{t.target}">{html.escape(t.target)}: {html.escape(t.title)}</a></li>' for _, t in targets.iterrows()) + "</ul>")
+        f'<li><a href="#{t.target}">{html.escape(t.target)}: {html.escape(t.title)}</a></li>' for _, t in targets.iterrows())
+                 + '<li><a href="#timings">Run times</a></li></ul>')
     for _, t in targets.iterrows():
         parts.append(f'<h2 id="{t.target}">{html.escape(t.target)}: {html.escape(t.title)}</h2>')
         parts.append(f"<p><i>{html.escape(t.work)}</i></p><p>{html.escape(t.description)}</p>")
@@ -112,6 +126,7 @@ note gives the analysis and the reading that does reproduce it, which is itself 
             parts.append(figure_html(fig))
         rows = check[check.target == t.target]
         parts.append(table_html(rows) if len(rows) else "<p>No published numbers are checked for this target.</p>")
+    parts.append('<h2 id="timings">Run times</h2>' + timings_html(os.path.join(args.results, "timings.csv")))
     parts.append("</body></html>")
     os.makedirs(os.path.dirname(args.out), exist_ok=True)
     with open(args.out, "w") as f:

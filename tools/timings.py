@@ -4,7 +4,6 @@
 Every driver writes <results>/<target>/timing_<driver>.csv (target, driver, wall_s, particle_steps, threads:
 the wall time of its run and the particle-steps its time loops took). This script collects them, sorted by
 wall time, adds the particle-steps per second, writes <results>/timings.csv and prints it with the total.
-A run that several targets share is done once (its reuse shows as a row with little wall time).
 """
 import argparse
 import csv

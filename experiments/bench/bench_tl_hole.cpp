@@ -1,5 +1,5 @@
 // Scene benchmark: the Ismail 2009 Section 5.4.4 sheet with a hole (scenes/ismail_hole.hpp, same CHOSEN
-// parameters as ismail2009_fig5_13to5_15_hole.cpp) at increasing resolution. Writes <out>/bench_tl_hole.csv
+// parameters as ismail2009_fig5_13to5_15_hole.cpp) at increasing resolution, up to the study's 201 x 201. Writes <out>/bench_tl_hole.csv
 // with the common bench columns; the SPH matrices, ghost interpolation rows and the sparse LU factorisations of
 // the boundary systems are reported in their own rows (variant = matrix_build, steps = 0), the time loop in
 // variant = time_loop. Error = |smoothed max principal stress at (0, R) - Kirsch/Heywood| / Kirsch/Heywood.
@@ -13,7 +13,7 @@
 
 int main(int argc, char** argv) {
   sph::Driver d("bench_tl_hole", "bench", "2D total Lagrangian SPH sheet with a hole: time loop and matrix build");
-  std::vector<int> ns{21, 41, 81};
+  std::vector<int> ns{21, 81, 201};  // 201 x 201: the resolution the I-hole study ends at
   d.param("n", ns, "particles along a side");
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("n")) ns = {21};
