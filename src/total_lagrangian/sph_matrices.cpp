@@ -93,23 +93,25 @@ namespace {
 // outweigh the fork/join.
 constexpr int kParallelRows2D = 2000;
 
-void require_shared_pattern(const SphMatrices2D& m) {
+// Calls row(p, begin, end, inner, vx, vy) for every row p of the pattern X and Y share, rows in parallel.
+template <class Row>
+void for_each_row_2d(const SphMatrices2D& m, Row&& row) {
   if (m.X.nonZeros() != m.Y.nonZeros() || m.X.rows() != m.Y.rows() || !m.X.isCompressed() || !m.Y.isCompressed())
     throw std::invalid_argument("2D SPH matrices: X and Y must share one compressed pattern (build_sph_matrices_2d)");
-}
-}  // namespace
-
-void gradient_2d(const SphMatrices2D& m, const Eigen::VectorXd& u0, const Eigen::VectorXd& u1, Eigen::VectorXd (&g)[4]) {
-  require_shared_pattern(m);
   const int n = static_cast<int>(m.X.rows());
   const int* outer = m.X.outerIndexPtr();
   const int* inner = m.X.innerIndexPtr();
   const double* vx = m.X.valuePtr();
   const double* vy = m.Y.valuePtr();
 #pragma omp parallel for schedule(static) if (n > kParallelRows2D)
-  for (int p = 0; p < n; ++p) {
+  for (int p = 0; p < n; ++p) row(p, outer[p], outer[p + 1], inner, vx, vy);
+}
+}  // namespace
+
+void gradient_2d(const SphMatrices2D& m, const Eigen::VectorXd& u0, const Eigen::VectorXd& u1, Eigen::VectorXd (&g)[4]) {
+  for_each_row_2d(m, [&](int p, int begin, int end, const int* inner, const double* vx, const double* vy) {
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    for (int k = outer[p]; k < outer[p + 1]; ++k) {
+    for (int k = begin; k < end; ++k) {
       const int q = inner[k];
       s0 += vx[k] * u0[q];
       s1 += vy[k] * u0[q];
@@ -117,20 +119,13 @@ void gradient_2d(const SphMatrices2D& m, const Eigen::VectorXd& u0, const Eigen:
       s3 += vy[k] * u1[q];
     }
     g[0][p] = s0; g[1][p] = s1; g[2][p] = s2; g[3][p] = s3;
-  }
+  });
 }
 
 void divergence_2d(const SphMatrices2D& m, const Eigen::VectorXd (&P)[4], Eigen::VectorXd& a0, Eigen::VectorXd& a1) {
-  require_shared_pattern(m);
-  const int n = static_cast<int>(m.X.rows());
-  const int* outer = m.X.outerIndexPtr();
-  const int* inner = m.X.innerIndexPtr();
-  const double* vx = m.X.valuePtr();
-  const double* vy = m.Y.valuePtr();
-#pragma omp parallel for schedule(static) if (n > kParallelRows2D)
-  for (int p = 0; p < n; ++p) {
+  for_each_row_2d(m, [&](int p, int begin, int end, const int* inner, const double* vx, const double* vy) {
     double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
-    for (int k = outer[p]; k < outer[p + 1]; ++k) {
+    for (int k = begin; k < end; ++k) {
       const int q = inner[k];
       x0 += vx[k] * P[0][q];
       y0 += vy[k] * P[1][q];
@@ -139,7 +134,7 @@ void divergence_2d(const SphMatrices2D& m, const Eigen::VectorXd (&P)[4], Eigen:
     }
     a0[p] = x0 + y0;
     a1[p] = x1 + y1;
-  }
+  });
 }
 
 }  // namespace sph
