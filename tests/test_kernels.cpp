@@ -2,6 +2,8 @@
 // closed-form constants against quadrature.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/kernels.hpp"
 
 namespace {
@@ -85,23 +87,24 @@ TEST(KernelConstants, FusedWAndFEqualTheSeparateCalls) {
   }
 }
 
-// Kernel::at(h) precomputes W_and_F's constants: the pair refreshes rely on it giving the same bits.
-TEST(KernelConstants, AtFixedHGivesTheBitsOfWAndF) {
+// Kernel::at(h), the refreshes' evaluator with its constants computed once, against the separate W and F at
+// several smoothing lengths. q = r * (1/h) and r / h differ by at most ~2 ulp of q (2.2e-16 q); W and F move
+// by |w'| or |(w'/q)'| times that, below 2.2e-16 * 2.5 * max|w'| * c ~ 1e-15 of the peak value for both shapes:
+// 1e-14 of W(0) and F(0) bounds it (at h = 1 the two agree to the bit: FusedWAndFEqualTheSeparateCalls).
+TEST(KernelConstants, AtFixedHEqualsTheSeparateCalls) {
   const sph::CubicSpline k(2);
   const sph::Lucy lucy(2);
   for (double h : {0.15, 1.0, 3.0}) {
     const auto at = k.at(h);
     const auto lat = lucy.at(h);
     for (double q : {0.0, 1e-14, 0.3, 0.99, 1.0, 1.7, 2.0, 2.5}) {
-      double W, F, W2, F2;
-      k.W_and_F(q * h, h, W, F);
-      at(q * h, W2, F2);
-      EXPECT_EQ(W, W2) << h << " " << q;
-      EXPECT_EQ(F, F2) << h << " " << q;
-      lucy.W_and_F(q * h, h, W, F);
-      lat(q * h, W2, F2);
-      EXPECT_EQ(W, W2) << h << " " << q;
-      EXPECT_EQ(F, F2) << h << " " << q;
+      double W, F;
+      at(q * h, W, F);
+      EXPECT_NEAR(W, k.W(q * h, h), 1e-14 * k.W(0.0, h)) << h << " " << q;
+      EXPECT_NEAR(F, k.F(q * h, h), 1e-14 * std::abs(k.F(0.0, h))) << h << " " << q;
+      lat(q * h, W, F);
+      EXPECT_NEAR(W, lucy.W(q * h, h), 1e-14 * lucy.W(0.0, h)) << h << " " << q;
+      EXPECT_NEAR(F, lucy.F(q * h, h), 1e-14 * std::abs(lucy.F(0.0, h))) << h << " " << q;
     }
   }
 }

@@ -183,14 +183,9 @@ class Kernel {
   double W(double r, double h) const { return sigma_ / hpow(h) * Shape::w(r / h); }
   double dWdr(double r, double h) const { return sigma_ / (hpow(h) * h) * Shape::dw(r / h); }
   double d2Wdr2(double r, double h) const { return sigma_ / (hpow(h) * h * h) * Shape::d2w(r / h); }
-  /// W and F together (one division, one branch on the support): the pair-list refresh needs both.
-  void W_and_F(double r, double h, double& W, double& F) const {
-    const double inv_h = 1.0 / h, q = r * inv_h, c = sigma_ / hpow(h);
-    W = c * Shape::w(q);
-    F = (q < 1e-12) ? c * inv_h * inv_h * Shape::d2w(0.0) : c * inv_h * inv_h * Shape::dw(q) / q;
-  }
-  /// W_and_F at one smoothing length with its constants computed once (the same operations on the same
-  /// values, so the same bits): the pair-list refreshes call it for every candidate pair.
+  /// W and F together at one smoothing length, its constants (1/h, sigma/h^dim, sigma/h^(dim+2)) computed
+  /// once: the pair-list refreshes call it for every candidate pair (one multiplication and one branch on the
+  /// support for W, one division for F).
   struct AtH {
     double inv_h, c, cF;
     void operator()(double r, double& W, double& F) const {
@@ -203,6 +198,7 @@ class Kernel {
     const double inv_h = 1.0 / h, c = sigma_ / hpow(h);
     return {inv_h, c, c * inv_h * inv_h};
   }
+  void W_and_F(double r, double h, double& W, double& F) const { at(h)(r, W, F); }
   /// F with grad_a W_ab = r_ab F_ab (Gray et al. 2001 eq 3.2): dW/dr / r, finite at r -> 0.
   double F(double r, double h) const {
     const double q = r / h;
