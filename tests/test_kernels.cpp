@@ -108,3 +108,18 @@ TEST(KernelConstants, AtFixedHEqualsTheSeparateCalls) {
     }
   }
 }
+
+// The closed forms of dw(q)/q that the pair-list refreshes use instead of a division: equal to dw(q) / q to
+// round-off (a few ulp of the largest |dw/q|, which is at q = 0), and to d2w(0) at q = 0.
+TEST(KernelShapes, DwOverQIsTheClosedFormOfTheQuotient) {
+  auto check = [](auto shape, double peak) {
+    using S = decltype(shape);
+    EXPECT_DOUBLE_EQ(S::dw_over_q(0.0), S::d2w(0.0));
+    for (int i = 1; i <= 400; ++i) {
+      const double q = i * 0.00625 * S::support;  // through both pieces of the spline and past the support
+      EXPECT_NEAR(S::dw_over_q(q), S::dw(q) / q, 4e-16 * peak) << S::name << " q = " << q;
+    }
+  };
+  check(sph::CubicSplineShape{}, 3.0);
+  check(sph::LucyShape{}, 12.0);
+}

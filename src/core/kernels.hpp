@@ -12,6 +12,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace sph {
@@ -39,6 +40,12 @@ struct CubicSplineShape {
     if (q < 2.0) { const double t = 2.0 - q; return -0.75 * t * t; }
     return 0.0;
   }
+  /// dw(q) / q without the division where the polynomial allows (q < 1); the pair-list refreshes' F.
+  static double dw_over_q(double q) {
+    if (q < 1.0) return -3.0 + 2.25 * q;
+    if (q < 2.0) { const double t = 2.0 - q; return -0.75 * t * t / q; }
+    return 0.0;
+  }
   static double d2w(double q) {
     if (q < 1.0) return -3.0 + 4.5 * q;
     if (q < 2.0) return 1.5 * (2.0 - q);
@@ -61,6 +68,11 @@ struct LucyShape {
     if (q >= 1.0) return 0.0;
     const double t = 1.0 - q;
     return -12.0 * q * t * t;
+  }
+  static double dw_over_q(double q) {  // -12 (1 - q)^2: no division
+    if (q >= 1.0) return 0.0;
+    const double t = 1.0 - q;
+    return -12.0 * t * t;
   }
   static double d2w(double q) {  // -12 (1 - q)(1 - 3q)
     if (q >= 1.0) return 0.0;
@@ -186,25 +198,31 @@ class Kernel {
   /// W and F together at one smoothing length, its constants (1/h, sigma/h^dim, sigma/h^(dim+2)) computed
   /// once: the pair-list refreshes call it for every candidate pair (one multiplication and one branch on the
   /// support for W, one division for F).
+  /// A shape may give dw(q)/q in closed form (dw_over_q: no division, finite at q = 0); F uses it if so.
+  template <class S, class = void>
+  struct has_dw_over_q : std::false_type {};
+  template <class S>
+  struct has_dw_over_q<S, std::void_t<decltype(S::dw_over_q(0.0))>> : std::true_type {};
   struct AtH {
     double inv_h, c, cF;
     void operator()(double r, double& W, double& F) const {
       const double q = r * inv_h;
       W = c * Shape::w(q);
-      F = (q < 1e-12) ? cF * Shape::d2w(0.0) : cF * Shape::dw(q) / q;
+      F = cF * quotient(q);
     }
   };
+  /// dw(q)/q: the shape's closed form if it has one, else the quotient (its limit d2w(0) at q -> 0).
+  static double quotient(double q) {
+    if constexpr (has_dw_over_q<Shape>::value) return Shape::dw_over_q(q);
+    else return q < 1e-12 ? Shape::d2w(0.0) : Shape::dw(q) / q;
+  }
   AtH at(double h) const {
     const double inv_h = 1.0 / h, c = sigma_ / hpow(h);
     return {inv_h, c, c * inv_h * inv_h};
   }
   void W_and_F(double r, double h, double& W, double& F) const { at(h)(r, W, F); }
   /// F with grad_a W_ab = r_ab F_ab (Gray et al. 2001 eq 3.2): dW/dr / r, finite at r -> 0.
-  double F(double r, double h) const {
-    const double q = r / h;
-    if (q < 1e-12) return sigma_ / (hpow(h) * h * h) * Shape::d2w(0.0);
-    return sigma_ / (hpow(h) * h * h) * Shape::dw(q) / q;
-  }
+  double F(double r, double h) const { return sigma_ / (hpow(h) * h * h) * quotient(r / h); }
 
  private:
   static double checked_normalisation(int dim) {

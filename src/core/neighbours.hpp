@@ -34,12 +34,20 @@ class CellList2D {
   void build(const std::vector<Vec2>& x);
 
   /// x_a - x_b, by the minimum image in periodic directions.
-  Vec2 displacement(const Vec2& a, const Vec2& b) const {
-    Vec2 d = a - b;
-    if (box_.periodic_x) d.x() -= box_.Lx() * std::nearbyint(d.x() / box_.Lx());
-    if (box_.periodic_y) d.y() -= box_.Ly() * std::nearbyint(d.y() / box_.Ly());
-    return d;
-  }
+  Vec2 displacement(const Vec2& a, const Vec2& b) const { return minimum_image()(a, b); }
+  /// The same as a small value to keep in registers: a loop that stores through pointers the compiler
+  /// cannot tell apart from this list's box would otherwise reload the box for every pair.
+  struct MinimumImage {
+    bool periodic_x, periodic_y;
+    double Lx, Ly;
+    Vec2 operator()(const Vec2& a, const Vec2& b) const {
+      Vec2 d = a - b;
+      if (periodic_x) d.x() -= Lx * std::nearbyint(d.x() / Lx);
+      if (periodic_y) d.y() -= Ly * std::nearbyint(d.y() / Ly);
+      return d;
+    }
+  };
+  MinimumImage minimum_image() const { return {box_.periodic_x, box_.periodic_y, box_.Lx(), box_.Ly()}; }
 
   /// Calls f(j, d, r) for every particle j != i with r = |d| < radius, d = x_i - x_j (minimum image).
   /// `radius` must not exceed the radius the list was built for (the stencil would miss pairs): throws.

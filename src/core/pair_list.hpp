@@ -15,7 +15,9 @@
 // size.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "core/neighbours.hpp"
@@ -51,7 +53,7 @@ struct PairList {
       cells.build(x);
       collect(cells, x, support_radius + skin);
     }
-    refresh(cells, x, geometry);
+    refresh(cells, x, support_radius, geometry);
   }
 
  private:
@@ -97,24 +99,38 @@ struct PairList {
   }
 
   template <class Geometry>
-  void refresh(const CellList2D& cells, const std::vector<Vec2>& x, Geometry& geometry) {
+  void refresh(const CellList2D& cells, const std::vector<Vec2>& x, double support_radius, Geometry& geometry) {
     const long n = static_cast<long>(x.size());
+    const double support2 = support_radius * support_radius;
+    const auto displacement = cells.minimum_image();
+    const std::decay_t<Geometry> g = geometry;  // by value: in registers, like the pointers below (see MinimumImage)
+    const std::uint32_t* __restrict start_ = start.data();
+    const std::uint32_t* __restrict cand_ = cand.data();
+    const Vec2* __restrict x_ = x.data();
+    std::uint32_t* __restrict b_ = b.data();
+    Vec2* __restrict dx_ = dx.data();
+    double* __restrict W_ = W.data();
+    double* __restrict F_ = F.data();
+    std::uint32_t* __restrict active_ = active.data();
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long a = 0; a < n; ++a) {
-      std::uint32_t j = start[a];
-      for (std::uint32_t k = start[a]; k < start[a + 1]; ++k) {
-        const std::uint32_t c = cand[k];
-        const Vec2 d = cells.displacement(x[a], x[c]);
+      std::uint32_t j = start_[a];
+      const Vec2 xa = x_[a];
+      for (std::uint32_t k = start_[a], end = start_[a + 1]; k < end; ++k) {
+        const std::uint32_t c = cand_[k];
+        const Vec2 d = displacement(xa, x_[c]);
+        const double r2 = d.squaredNorm();
+        if (r2 >= support2) continue;  // in the skin only: no square root, no kernel
         double w, f;
-        geometry(d.norm(), w, f);
+        g(std::sqrt(r2), w, f);
         if (w == 0.0 && f == 0.0) continue;  // beyond the support: every term of the pair is zero
-        b[j] = c;
-        dx[j] = d;
-        W[j] = w;
-        F[j] = f;
+        b_[j] = c;
+        dx_[j] = d;
+        W_[j] = w;
+        F_[j] = f;
         ++j;
       }
-      active[a] = j - start[a];
+      active_[a] = j - start_[a];
     }
   }
 
