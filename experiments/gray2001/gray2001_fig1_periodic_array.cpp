@@ -7,7 +7,7 @@
 //   10 000 steps, h/dp = 1 and 1.5, square cells, zero initial S            (Section 5.3.1, Fig. 1)
 //   rho0 = c0 = 1, mu = 0.22, XSPH eps = 0.5, artificial stress eps = 0.3, n = 4 (Sections 3, 5, 7)
 //   CHOSEN: 20 x 20 particles in the periodic cell (the figure's cell is not given), pressure
-//     P = 0.05 rho0 c0^2 (rho = 1.05: "positive pressure" without a value), dt = cfl h / c_L (cfl = 0.625, the scheme's default),
+//     P = 0.05 rho0 c0^2 (rho = 1.05: "positive pressure" without a value), dt = cfl h / c_L (cfl = 0.5, the scheme's default),
 //     artificial viscosity alpha = beta = 1, an initial random displacement of 1e-4 dp to seed the
 //     instability (round-off alone seeds it too, but more slowly and less reproducibly).
 // Order parameters (CHOSEN to make the claims checkable):
@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig1_periodic_array", "G-fig1", "Gray et al. 2001 Fig 1: periodic square array under pressure");
   int n = 20, steps = 10000, every = 500;
   double pressure = 0.05, seed_amp = 1e-4;
-  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp): mu = 0.22, cfl = 0.625
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp): mu = 0.22, cfl = 0.5
   std::vector<double> h_over_dp{1.0, 1.5};
   d.param("n", n, "particles per side of the periodic cell");
   d.param("steps", steps, "time steps (Gray 2001: 10 000)");

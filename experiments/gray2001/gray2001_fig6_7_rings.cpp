@@ -10,7 +10,7 @@
 //     4406 particles in all; the layout of PySPH's rings example)
 //   gap 0.2 between the outer edges at t = 0 (CHOSEN, as PySPH; the paper does not say): the closest
 //     particles start 0.4 apart, just outside the 2h = 0.3 support
-//   artificial viscosity alpha = beta = 1, dt = cfl h / (c_L + 0.059), cfl = 0.625 (the scheme's default, from G-stab-rs)
+//   artificial viscosity alpha = beta = 1, dt = cfl h / (c_L + 0.059), cfl = 0.5 (the scheme's default, from G-stab-rs)
 //   run: eps = 0.3 until the rings have separated plus --after-contact, at most --t-max; eps = 0 over the
 //     same time (CHOSEN)
 //   --quick: dp = 0.2, gap 0.4 (so the rings start outside each other's support), no coarse check
