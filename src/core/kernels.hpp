@@ -195,14 +195,13 @@ class Kernel {
   double W(double r, double h) const { return sigma_ / hpow(h) * Shape::w(r / h); }
   double dWdr(double r, double h) const { return sigma_ / (hpow(h) * h) * Shape::dw(r / h); }
   double d2Wdr2(double r, double h) const { return sigma_ / (hpow(h) * h * h) * Shape::d2w(r / h); }
-  /// W and F together at one smoothing length, its constants (1/h, sigma/h^dim, sigma/h^(dim+2)) computed
-  /// once: the pair-list refreshes call it for every candidate pair (one multiplication and one branch on the
-  /// support for W, one division for F).
-  /// A shape may give dw(q)/q in closed form (dw_over_q: no division, finite at q = 0); F uses it if so.
+  /// A shape may give dw(q)/q in closed form (dw_over_q: no division, finite at q = 0); quotient() uses it if so.
   template <class S, class = void>
   struct has_dw_over_q : std::false_type {};
   template <class S>
   struct has_dw_over_q<S, std::void_t<decltype(S::dw_over_q(0.0))>> : std::true_type {};
+  /// W and F together at one smoothing length, its constants (1/h, sigma/h^dim, sigma/h^(dim+2)) computed
+  /// once: the pair-list refreshes call it for every candidate pair.
   struct AtH {
     double inv_h, c, cF;
     void operator()(double r, double& W, double& F) const {
