@@ -15,6 +15,9 @@
 // size.
 #pragma once
 
+#include <omp.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -69,30 +72,42 @@ struct PairList {
 
   bool keep(long a, std::size_t j) const { return !half || static_cast<long>(j) > a; }
 
+  // One traversal of the cell stencil: each thread appends the candidates of its rows (a contiguous block,
+  // OpenMP's static partition) to its own buffer and counts them per row; after the prefix sum each thread
+  // copies its block into place. The same candidates in the same order as counting first and filling in a
+  // second traversal, which cost twice the search (22% of a rings run, where the list is re-collected every
+  // ~4 steps).
   void collect(const CellList2D& cells, const std::vector<Vec2>& x, double radius) {
     const long n = static_cast<long>(x.size());
     start.resize(n + 1);
     start[0] = 0;
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-    for (long a = 0; a < n; ++a) {
-      std::uint32_t count = 0;
-      cells.for_each_neighbour(x, a, radius, [&](std::size_t j, const Vec2&, double) { count += keep(a, j); });
-      start[a + 1] = count;
-    }
-    for (long a = 0; a < n; ++a) start[a + 1] += start[a];
-    const std::size_t total = start[n];
-    cand.resize(total);
-    b.resize(total);
-    dx.resize(total);
-    W.resize(total);
-    F.resize(total);
-    active.resize(n);
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-    for (long a = 0; a < n; ++a) {
-      std::uint32_t k = start[a];
-      cells.for_each_neighbour(x, a, radius, [&](std::size_t j, const Vec2&, double) {
-        if (keep(a, j)) cand[k++] = static_cast<std::uint32_t>(j);
-      });
+    const int threads = n >= kParallelMin ? omp_get_max_threads() : 1;
+    if (buffers_.size() < static_cast<std::size_t>(threads)) buffers_.resize(threads);
+#pragma omp parallel num_threads(threads)
+    {
+      const long T = omp_get_num_threads(), t = omp_get_thread_num();
+      const long q = n / T, r = n % T;
+      const long begin = t * q + (t < r ? t : r), end = begin + q + (t < r ? 1 : 0);
+      auto& buffer = buffers_[t];
+      buffer.clear();
+      for (long a = begin; a < end; ++a) {
+        const std::size_t before = buffer.size();
+        cells.append_neighbours(x, a, radius, buffer, [&](std::size_t j) { return keep(a, j); });
+        start[a + 1] = static_cast<std::uint32_t>(buffer.size() - before);
+      }
+#pragma omp barrier
+#pragma omp single
+      {
+        for (long a = 0; a < n; ++a) start[a + 1] += start[a];
+        const std::size_t total = start[n];
+        cand.resize(total);
+        b.resize(total);
+        dx.resize(total);
+        W.resize(total);
+        F.resize(total);
+        active.resize(n);
+      }
+      std::copy(buffer.begin(), buffer.end(), cand.begin() + start[begin]);
     }
     x_collected_ = x;
     ++collections;
@@ -135,6 +150,7 @@ struct PairList {
   }
 
   std::vector<Vec2> x_collected_;
+  std::vector<std::vector<std::uint32_t>> buffers_;  ///< per thread: the candidates of its rows (collect)
 };
 
 }  // namespace sph
