@@ -85,12 +85,12 @@ struct PairList {
     if (buffers_.size() < static_cast<std::size_t>(threads)) buffers_.resize(threads);
 #pragma omp parallel num_threads(threads)
     {
-      const long T = omp_get_num_threads(), t = omp_get_thread_num();
-      const long q = n / T, r = n % T;
-      const long begin = t * q + (t < r ? t : r), end = begin + q + (t < r ? 1 : 0);
+      const int t = omp_get_thread_num();
+      std::size_t begin, end;
+      static_rows(n, t, omp_get_num_threads(), begin, end);
       auto& buffer = buffers_[t];
       buffer.clear();
-      for (long a = begin; a < end; ++a) {
+      for (long a = static_cast<long>(begin); a < static_cast<long>(end); ++a) {
         const std::size_t before = buffer.size();
         cells.append_neighbours(x, a, radius, buffer, [&](std::size_t j) { return keep(a, j); });
         start[a + 1] = static_cast<std::uint32_t>(buffer.size() - before);

@@ -19,6 +19,7 @@
 #include "core/kernels.hpp"
 #include "core/materials.hpp"
 #include "core/pair_list.hpp"
+#include "core/parallel.hpp"
 #include "updated_lagrangian/artificial_stress.hpp"
 #include "updated_lagrangian/elastic_body.hpp"
 #include "updated_lagrangian/parameters.hpp"
@@ -90,15 +91,6 @@ inline double ipow(double x, int n) {
   double r = 1.0;
   for (int i = 0; i < n; ++i) r *= x;
   return r;
-}
-
-/// Rows [begin, end) of thread t of T: the partition of OpenMP's schedule(static) in libgomp (the first
-/// n % T threads take one row more), so that the sums keep the order they had under `omp for`.
-inline void static_rows(std::size_t n, int t, int T, std::size_t& begin, std::size_t& end) {
-  std::size_t q = n / T, r = n % T;
-  if (static_cast<std::size_t>(t) < r) { ++q; r = 0; }
-  begin = q * t + r;
-  end = begin + q;
 }
 
 /// The rates of the body's current state into `out`. With summation density it also sets body.rho.
