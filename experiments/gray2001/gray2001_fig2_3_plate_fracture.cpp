@@ -3,8 +3,8 @@
 // the support ... early in the oscillation") and with the artificial stress (eps = 0.3: "completely
 // stable", "continued for as long as desired": checked over --periods theoretical periods).
 //
-// Parameters: as gray2001_table1_2_plate_periods (clamp, viscosity, time step) but dp = 0.2 (CHOSEN for run
-// time: the eps = 0.3 run covers 10 periods; --dp 0.1, the paper's resolution, costs 8x).
+// Parameters: as gray2001_table1_2_plate_periods (clamp, viscosity, time step, dp = 0.1: the tables' resolution,
+// n = 20 across H; --dp 0.2 runs 8x faster).
 // Fracture is detected automatically: the free particles split into more than one piece at a link
 // distance of 1.5 dp (CHOSEN: the nearest-neighbour distance of an intact lattice stretched by 50%),
 // checked every 5 time units; the crack position is the largest x reached by the piece that holds the
@@ -19,8 +19,8 @@
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig2_3_plate_fracture", "G-fig2", "Gray et al. 2001 Figs 2-3: plate fracture without, stability with artificial stress");
-  double dp = 0.2, clamp = 2.0, Vf = 0.05, periods = 10.0, snapshot_every = 100.0;
-  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp) but mu:
+  double dp = 0.1, clamp = 2.0, Vf = 0.05, periods = 10.0, snapshot_every = 100.0;
+  sph::GrayParameters scheme = scenes::plate_scheme();  // the plate's (plate_run.hpp: the scheme's defaults, cfl 0.625) but mu:
   scheme.mu = 0.6;             // Figs 2-3
   long max_steps = -1;
   d.param("dp", dp, "particle spacing");

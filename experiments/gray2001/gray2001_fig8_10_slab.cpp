@@ -18,12 +18,11 @@
 //     (0.129 at t = 394, as the Fig 10 caption). The driver measures the strain at t = 394 from the bands'
 //     motion (strain_at_t394); --end-accel 5e-6 runs the other reading.
 //   --quick: dp = 0.064, eps = 0.3 to t = 420, no resolution study.
-//   dp = 0.032 (CHOSEN for run time: the paper's 0.016 costs 8x, ~30 min on one idle core; --dp 0.016).
-//     The resolution study (--study-dps, default 0.064, plus the main dp) gives the fracture time's
-//     dependence on dp.
+//   dp = 0.016 (Sec 7.3; --dp 0.032 runs 8x faster). The resolution study (--study-dps, default 0.064 and
+//     0.032, plus the main dp) gives the fracture time's dependence on dp.
 //   slab of round(3 / dp) x round(1 / dp) particles at half-spacings (3/0.016 = 187.5: 188 x 63 at the
 //     paper's dp); band = particles whose centre lies within 0.2 of an end (CHOSEN)
-//   artificial viscosity alpha = beta = 1, dt = cfl h / (c_L + v_end), cfl = 0.5 (the scheme's default, from G-stab-rs)
+//   artificial viscosity alpha = beta = 1, dt = cfl h / (c_L + v_end), cfl = 0.5 (the scheme's default, from G-stab-rs: parameters.hpp says why not the plate's 0.625)
 // Measured (automatically, every --sample-dt): fracture = the two driven bands are in different pieces
 //   at a link distance of 1.5 dp (the G-fig2 criterion applied to the ends); first split = any piece
 //   breaks off; neck width = the narrowest x bin (2 dp wide) of the free part, as the y extent of its
@@ -62,10 +61,10 @@ const scenes::SlabSample& at_time(const std::vector<scenes::SlabSample>& trace, 
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig8_10_slab", "G-fig8", "Gray et al. 2001 Figs 8-10: slab under tension with von Mises plasticity");
-  double dp = 0.032, end_accel = 2.5e-6, band = 0.2, t_max_eps0 = 300, t_max = 700;
+  double dp = 0.016, end_accel = 2.5e-6, band = 0.2, t_max_eps0 = 300, t_max = 700;
   sph::GrayParameters scheme = scenes::slab_scheme();  // Sec 7.3: mu = 0.3, the yield 0.03
   double frame_every_eps0 = 20, frame_every = 50, sample_dt = 2.0;
-  std::vector<double> study_dps{0.064}, runs{0.0, 0.3};
+  std::vector<double> study_dps{0.064, 0.032}, runs{0.0, 0.3};
   d.param("dp", dp, "particle spacing (Sec 7.3: 0.016)");
   d.param("end-accel", end_accel, "outward acceleration of EACH end band (reading: 5e-6 is the relative one)");
   d.param("band", band, "width of the driven end bands (Sec 7.3: 0.2)");

@@ -31,7 +31,8 @@ struct GrayParameters {
   /// 0.5 keeps a margin of 2.5 and halving it moves no checked quantity beyond its tolerance (G-stab, G-stab-rs).
   /// Tried 0.625 (margin 2.0, 27500dc): the plate rows held (halving moved the period by 3.2e-7), but the slab did
   /// not: at dp = 0.032 the eps = 0.3 slab no longer parted within its run, and halving the step moved its parting
-  /// time at dp = 0.064 by 9.6% (0.012 at 0.5) against the 10% tolerance.
+  /// time at dp = 0.064 by 9.6% (0.012 at 0.5) against the 10% tolerance. So the plate drivers take 0.625 (their
+  /// scenes::plate_scheme, experiments/gray2001/scenes/plate_run.hpp) and the rings and the slab this 0.5.
   double cfl = 0.5;
   double skin_over_h = 0.2;        ///< Verlet skin of the pair list, in units of h (0: rebuild every step)
   /// Longitudinal wave speed sqrt(c0^2 + 4 mu / (3 rho0)) (4.11): the signal speed of the time step.
