@@ -20,7 +20,7 @@
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig2_3_plate_fracture", "G-fig2", "Gray et al. 2001 Figs 2-3: plate fracture without, stability with artificial stress");
   double dp = 0.1, clamp = 2.0, Vf = 0.05, periods = 10.0, snapshot_every = 100.0;
-  sph::GrayParameters scheme = scenes::plate_scheme();  // the plate's (plate_run.hpp: the scheme's defaults, cfl 0.625) but mu:
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp) but mu:
   scheme.mu = 0.6;             // Figs 2-3
   long max_steps = -1;
   d.param("dp", dp, "particle spacing");

@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   std::vector<int> ns{10, 20, 30};
   std::vector<double> alphas{0.5, 2.0};
   double clamp = 2.0, Vf = 0.01, periods = 1.0;
-  sph::GrayParameters scheme = scenes::plate_scheme();  // the plate's (plate_run.hpp: the scheme's defaults, cfl 0.625); Fig 4's mu = 0.22 is the default
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp); Fig 4's mu = 0.22 is the default
   d.param("n", ns, "particles across H = 2");
   d.param("alpha", scheme.alpha, "artificial viscosity alpha (= beta) of the resolution runs");
   d.param("alphas-coarse", alphas, "further alpha (= beta) values run at the coarsest n");

@@ -14,7 +14,7 @@
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig5_plate_large_amplitude", "G-fig5", "Gray et al. 2001 Fig 5: large-amplitude plate oscillation");
   double dp = 0.1, clamp = 2.0, Vf = 0.05, periods = 3.0, snapshot_every = 200.0;
-  sph::GrayParameters scheme = scenes::plate_scheme();  // the plate's (plate_run.hpp: the scheme's defaults, cfl 0.625): Fig 5's mu = 0.22 and eps = 0.30
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp): Fig 5's mu = 0.22 and eps = 0.30
   long max_steps = -1;
   d.param("dp", dp, "particle spacing");
   d.param("clamp-length", clamp, "plate length held between the fixed layers");

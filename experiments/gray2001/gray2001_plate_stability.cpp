@@ -17,7 +17,7 @@
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_plate_stability", "G-stab", "Stability of the plate: time-step sweep, long run, perturbed lattice");
   double dp = 0.25, Vf = 0.01, sweep_time = 300, long_periods = 20, perturbation = 0.01;
-  sph::GrayParameters scheme = scenes::plate_scheme();  // the plate's (plate_run.hpp: the scheme's defaults, cfl 0.625) but mu:
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp) but mu:
   scheme.mu = 0.6;             // CHOSEN: the shortest periods of Table 1
   std::vector<double> cfls{0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0};
   d.param("dp", dp, "particle spacing");

@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   std::vector<int> ns{8, 12, 16, 20};
   std::vector<int> threads{omp_get_max_threads()};
   double Vf = 0.01;
-  sph::GrayParameters scheme = scenes::plate_scheme();  // the plate's (plate_run.hpp: the scheme's defaults, cfl 0.625) but mu:
+  sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp) but mu:
   scheme.mu = 0.6;             // CHOSEN: the Table 1 row mu = 0.6, V_f = 0.01
   d.param("n", ns, "particles across H = 2 (at least four values)");
   d.param("threads", threads, "OpenMP thread counts");

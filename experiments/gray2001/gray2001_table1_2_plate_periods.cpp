@@ -11,7 +11,7 @@
 //     fixed layers above and below and three behind (3 dp covers the 2h support)
 //   artificial viscosity alpha = beta = 1 (CHOSEN: Monaghan's usual values; the paper gives none;
 //     their effect on the decay is measured by G-fig4)
-//   time step dt = cfl h / (c_L + V_f), cfl = 0.625 (the plate's, scenes::plate_scheme: half the largest stable factor of G-stab)
+//   time step dt = cfl h / (c_L + V_f), cfl = 0.5 (the scheme's default, set from the stability sweep G-stab)
 //   run length: to the tip's first zero crossing, T = 2 t_1 (CHOSEN for run time: half the cost of a full
 //     period; --crossings 2 measures T between the first two crossings), at most --periods theory periods
 // Theory (7.1): E = 9 K mu / (3K + mu), nu = (3K - 2 mu) / (2 (3K + mu)), K = rho0 c0^2, plane strain
@@ -55,7 +55,7 @@ std::string theory_key(double H, double mu) {
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_table1_2_plate_periods", "G-tab1", "Gray et al. 2001 Tables 1-2: oscillating plate periods");
   double dp = 0.1, clamp = 2.0, periods = 2.0, paper_dp = 0.1;
-  sph::GrayParameters scheme = scenes::plate_scheme();  // cfl, alpha, beta: the plate's (plate_run.hpp: the scheme's defaults, cfl 0.625)
+  sph::GrayParameters scheme;  // cfl, alpha, beta: the scheme's defaults (parameters.hpp)
   int table = 0;
   long max_steps = -1;
   int crossings = 1;

@@ -31,8 +31,10 @@ struct GrayParameters {
   /// 0.5 keeps a margin of 2.5 and halving it moves no checked quantity beyond its tolerance (G-stab, G-stab-rs).
   /// Tried 0.625 (margin 2.0, 27500dc): the plate rows held (halving moved the period by 3.2e-7), but the slab did
   /// not: at dp = 0.032 the eps = 0.3 slab no longer parted within its run, and halving the step moved its parting
-  /// time at dp = 0.064 by 9.6% (0.012 at 0.5) against the 10% tolerance. So the plate drivers take 0.625 (their
-  /// scenes::plate_scheme, experiments/gray2001/scenes/plate_run.hpp) and the rings and the slab this 0.5.
+  /// time at dp = 0.064 by 9.6% (0.012 at 0.5) against the 10% tolerance. Tried 0.625 for the plate alone
+  /// (15c05e2): Table 2's thin plate at V_f = 0.05 then moved by 4.5e-4 (H = 1, mu = 0.6: T = 2443.10 at 0.5,
+  /// 2442.00 at 0.625, 2443.23 at 0.3125; 5.8e-4 at mu = 0.22), against 5.4e-5 from 0.5 to 0.3125: not converged
+  /// at the tables' printed precision (G-stab's halving row, on the thick plate at V_f = 0.01, moved 3e-7).
   double cfl = 0.5;
   double skin_over_h = 0.2;        ///< Verlet skin of the pair list, in units of h (0: rebuild every step)
   /// Longitudinal wave speed sqrt(c0^2 + 4 mu / (3 rho0)) (4.11): the signal speed of the time step.

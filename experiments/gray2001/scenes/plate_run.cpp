@@ -9,12 +9,6 @@
 
 namespace scenes {
 
-sph::GrayParameters plate_scheme() {
-  sph::GrayParameters p;
-  p.cfl = 0.625;  // G-stab: largest stable factor 1.25, over the least margin 2
-  return p;
-}
-
 PlateRunResult run_plate(const PlateRunSpec& s,
                          const std::function<void(const sph::GraySolver&, const sph::ElasticBody&)>& on_sample,
                          const std::string& progress_label) {

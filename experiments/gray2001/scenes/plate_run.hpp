@@ -12,14 +12,6 @@
 
 namespace scenes {
 
-/// The scheme's parameters for the plate: its defaults (parameters.hpp) but the time-step factor, set from
-/// the plate's stability map (issue 13: a margin not below 2x): G-stab's sweep keeps the plate stable up to
-/// a factor of 1.25 with and without the artificial stress (and breaks or blows up at 1.5), at mu = 0.6, the
-/// fastest sound speed of the tables; half of it is 0.625. G-stab checks the margin (stability_margin_*)
-/// and that halving this step leaves the period unchanged at the tables' printed precision. The rings and
-/// the slab keep the scheme's 0.5: their checked fracture times move with any change of the run.
-sph::GrayParameters plate_scheme();
-
 struct PlateRunSpec {
   PlateSpec plate;
   sph::GrayParameters scheme;      ///< the scheme's parameters (their defaults and sources: parameters.hpp)
