@@ -22,7 +22,7 @@
 //     0.032, plus the main dp) gives the fracture time's dependence on dp.
 //   slab of round(3 / dp) x round(1 / dp) particles at half-spacings (3/0.016 = 187.5: 188 x 63 at the
 //     paper's dp); band = particles whose centre lies within 0.2 of an end (CHOSEN)
-//   artificial viscosity alpha = beta = 1, dt = cfl h / (c_L + v_end), cfl = 0.5 (the scheme's default, from G-stab-rs: parameters.hpp says why not the plate's 0.625)
+//   artificial viscosity alpha = beta = 1, dt = cfl h / (c_L + v_end), cfl = 0.5 (the scheme's default, from G-stab-rs)
 // Measured (automatically, every --sample-dt): fracture = the two driven bands are in different pieces
 //   at a link distance of 1.5 dp (the G-fig2 criterion applied to the ends); first split = any piece
 //   breaks off; neck width = the narrowest x bin (2 dp wide) of the free part, as the y extent of its
