@@ -39,7 +39,7 @@ G-stab_DRIVERS := gray2001_plate_stability
 G-wp_DRIVERS := gray2001_plate_work_precision
 # Sections 7.2-7.3: colliding rings, the slab with von Mises plasticity (experiments/scenes/rings*, slab*),
 # their stability stress test, and the table of tensile-instability cures (beyond the paper). Full runs on
-# one busy core: G-fig6 ~2 min, G-fig8 ~7 min (dp = 0.032; --dp 0.016 ~8x), G-stab-rs ~3 min, X ~3 min.
+# one core: G-fig6 ~0.5 min, G-fig8 ~22 min (the paper's dp = 0.016 and the study at 0.032 and 0.064), G-stab-rs ~2 min, X ~1 min.
 TARGETS += G-fig6 G-fig8 G-stab-rs X
 G-fig6_DRIVERS := gray2001_fig6_7_rings
 G-fig8_DRIVERS := gray2001_fig8_10_slab

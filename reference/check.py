@@ -15,6 +15,15 @@ expect:   match        out of tolerance is a FAIL
                        the published value, or, where no reading reproduces it, the reproduced value must
                        match analysis_value (the number the analysis predicts) within the tolerance.
 quick:    no = not checked in --quick mode (the quick run cannot resolve it); anything else = checked.
+settings  (optional column) parameters a row accepts set on the command line, separated by spaces.
+
+What a value was computed with counts too (the header of its values file, written by the driver frame):
+a row FAILs, by the name of the file and the setting, when the file records parameters set on the command
+line ('# given = ...') other than the target's own arguments in experiments/targets.mk, --quick in --quick
+mode, and the row's settings; when the file is a --quick run and the check is not; when the file has no
+'given' record (results older than it: rerun); and when the values files of one target come from different
+code versions (stale results mixed with new ones). A reproduced value that is not finite FAILs every row,
+a discrepancy row too.
 
 The targets are those declared in experiments/targets.mk: a reference file of an undeclared target, or a
 declared target without its reference file, stops the check (exit 1) before anything is compared.
@@ -70,24 +79,81 @@ def load_reference(ref_dir):
         frames.append(df)
     if not frames:
         sys.exit(f"check: no reference files in {ref_dir}")
-    ref = pd.concat(frames, ignore_index=True)
+    ref = pd.concat(frames, ignore_index=True).fillna("")  # a column only some files have (settings): ""
     dup = ref[ref.duplicated(["target", "quantity"], keep=False)]
     if len(dup):
         sys.exit(f"check: duplicate reference rows:\n{dup[['target', 'quantity']]}")
     return ref
 
 
+def read_header(path):
+    """The '# key = value' lines at the top of a results file, as a dict."""
+    meta = {}
+    with open(path) as f:
+        for line in f:
+            if not line.startswith("#"):
+                break
+            key, sep, value = line[2:].rstrip("\n").partition(" = ")
+            if sep:
+                meta[key.strip()] = value
+    return meta
+
+
+class Source:
+    """Where a value comes from: its values file and what the file's header records about the run."""
+
+    def __init__(self, path, meta):
+        self.path = path
+        self.code_version = meta.get("code_version", "")
+        self.given = None if "given" not in meta else set(meta["given"].split())
+        self.quick = meta.get("param.quick", "false") == "true"
+
+
 def load_values(results_dir):
-    values = {}
+    """{(target, quantity): value} and {(target, quantity): Source}."""
+    values, sources = {}, {}
     for path in sorted(glob.glob(os.path.join(results_dir, "*", "values_*.csv"))):
         target = os.path.basename(os.path.dirname(path))
+        source = Source(os.path.relpath(path, results_dir), read_header(path))
         df = pd.read_csv(path, comment="#", dtype={"quantity": str, "note": str}, keep_default_na=False)
         for _, r in df.iterrows():
             key = (target, r["quantity"])
             if key in values:
                 sys.exit(f"check: {target}/{r['quantity']} written twice ({path})")
             values[key] = float(r["value"])
-    return values
+            sources[key] = source
+    return values, sources
+
+
+def target_arguments():
+    """{target: the parameter names its experiments/targets.mk arguments set}."""
+    return {t.name: {a[2:].split("=", 1)[0] for a in t.args.split() if a.startswith("--")}
+            for t in declaration.read().targets}
+
+
+def mixed_versions(sources):
+    """{target: sorted code versions} for the targets whose values files disagree on the code version."""
+    versions = {}
+    for (target, _), src in sources.items():
+        versions.setdefault(target, set()).add(src.code_version)
+    return {t: sorted(v) for t, v in versions.items() if len(v) > 1}
+
+
+def refusal(row, source, allowed, quick_mode, mixed):
+    """Why a value must not be checked against this row (None if it may)."""
+    target = row["target"]
+    if target in mixed:
+        return f"values of {target} from different code versions ({', '.join(mixed[target])}): stale results, rerun the target"
+    if source.given is None:
+        return f"{source.path} does not record which parameters were set (results older than the check): rerun"
+    if source.quick and not quick_mode:
+        return f"{source.path} is a --quick run, checked as a full one"
+    accepted = allowed | set(row.get("settings", "").split()) | ({"quick"} if quick_mode else set())
+    extra = sorted(source.given - accepted)
+    if extra:
+        return (f"{source.path} was run with {' '.join('--' + e for e in extra)} set, which neither "
+                f"experiments/targets.mk nor the reference row names")
+    return None
 
 
 def within(compare, reproduced, published, tol):
@@ -109,7 +175,7 @@ def describe_tolerance(compare, tol):
             "ge": f">= published - {tol:g}"}[compare]
 
 
-def check_row(row, values):
+def check_row(row, values, sources=None, allowed=frozenset(), quick_mode=False, mixed=None):
     target, q = row["target"], row["quantity"]
     published, tol, compare = float(row["published"]), float(row["tolerance"] or 0), row["compare"]
     reproduced = values.get((target, q))
@@ -118,6 +184,12 @@ def check_row(row, values):
            "tolerance": describe_tolerance(compare, tol), "source": row["source"]}
     if reproduced is None:
         return {**out, "status": "FAIL", "note": "no reproduced value (driver did not write it)"}
+    if sources is not None:
+        why = refusal(row, sources[(target, q)], allowed, quick_mode, mixed or {})
+        if why:
+            return {**out, "status": "FAIL", "note": f"refused: {why}"}
+    if not math.isfinite(reproduced):
+        return {**out, "status": "FAIL", "note": "reproduced value is not finite"}
     ok = within(compare, reproduced, published, tol)
     expect = row["expect"] or "match"
     if expect == "match":
@@ -155,14 +227,15 @@ def main():
     args = ap.parse_args()
 
     ref = load_reference(args.reference)
-    values = load_values(args.results)
+    values, sources = load_values(args.results)
+    arguments, mixed = target_arguments(), mixed_versions(sources)
     rows = []
     for _, r in ref.iterrows():
         if args.targets and r["target"] not in args.targets:
             continue
         if args.quick and r["quick"].strip().lower() == "no":
             continue
-        rows.append(check_row(r, values))
+        rows.append(check_row(r, values, sources, arguments.get(r["target"], set()), args.quick, mixed))
     out_path = os.path.join(args.results, "check.csv")
     os.makedirs(args.results, exist_ok=True)
     with open(out_path, "w", newline="") as f:

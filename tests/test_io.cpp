@@ -84,11 +84,11 @@ TEST(Csv, RoundTripThroughReadCsv) {
   EXPECT_EQ(t.meta_value("param.n"), "200");
   EXPECT_EQ(t.meta_value("param.h_over_dp"), "1.5");
   EXPECT_EQ(t.meta_value("param.note"), "a = b, \"c\"");
-  // Parameters in declaration order, after the fixed keys.
+  // Parameters in declaration order, after the fixed keys; then the names given on the command line.
   std::vector<std::string> keys;
   for (const auto& [k, v] : t.meta) keys.push_back(k);
   const std::vector<std::string> expected_keys{"driver", "target", "description", "code_version", "date",
-                                               "param.n", "param.kernel", "param.h_over_dp", "param.note"};
+                                               "param.n", "param.kernel", "param.h_over_dp", "param.note", "given"};
   EXPECT_EQ(keys, expected_keys);
   EXPECT_THROW(t.meta_value("param.missing"), std::out_of_range);
 
@@ -117,6 +117,17 @@ TEST(Csv, HeaderValuesWithLineBreaksDoNotCorruptTheTable) {
   EXPECT_NE(t.meta_value("description").find("first line"), std::string::npos);
   EXPECT_NE(t.meta_value("description").find("second line"), std::string::npos);
   EXPECT_EQ(t.meta_value("param.list").size(), 3u);
+}
+
+TEST(Csv, HeaderRecordsWhichParametersWereGivenOnTheCommandLine) {
+  sph::RunInfo info = sample_info();
+  const fs::path none = scratch("given_none.csv");
+  { sph::CsvWriter w(none, info, {"a"}); w.row(1); }
+  EXPECT_EQ(sph::read_csv(none).meta_value("given"), "");
+  info.given = {"n", "h_over_dp"};
+  const fs::path some = scratch("given_some.csv");
+  { sph::CsvWriter w(some, info, {"a"}); w.row(1); }
+  EXPECT_EQ(sph::read_csv(some).meta_value("given"), "n h_over_dp");
 }
 
 TEST(Csv, RowWithTheWrongNumberOfCellsThrows) {

@@ -22,6 +22,9 @@ CsvWriter::CsvWriter(const std::filesystem::path& path, const RunInfo& info, std
   if (!info.description.empty()) out_ << "# description = " << one_line(info.description) << "\n";
   out_ << "# code_version = " << code_version() << "\n# date = " << utc_timestamp() << "\n";
   for (const auto& [k, v] : info.parameters) out_ << "# param." << one_line(k) << " = " << one_line(v) << "\n";
+  out_ << "# given = ";  // the names set on the command line, separated by spaces (none: empty)
+  for (std::size_t i = 0; i < info.given.size(); ++i) out_ << (i ? " " : "") << one_line(info.given[i]);
+  out_ << "\n";
   for (std::size_t i = 0; i < columns.size(); ++i) out_ << (i ? "," : "") << quote(columns[i]);
   out_ << "\n";
 }

@@ -89,6 +89,9 @@ SnapshotSeries::SnapshotSeries(const std::filesystem::path& h5_path, const RunIn
   write_attribute(root, "code_version", std::string(code_version()));
   write_attribute(root, "date", utc_timestamp());
   for (const auto& [k, v] : info.parameters) write_attribute(root, ("param." + k).c_str(), v);
+  std::string given;
+  for (const auto& k : info.given) given += (given.empty() ? "" : " ") + k;
+  write_attribute(root, "given", given);
 }
 
 SnapshotSeries::~SnapshotSeries() {

@@ -18,6 +18,9 @@ struct RunInfo {
   std::string target;
   std::string description;
   std::vector<std::pair<std::string, std::string>> parameters;  // in declaration order
+  /// The parameters set on the command line (the others have the driver's defaults), in declaration order:
+  /// reference/check.py refuses results whose settings its reference rows do not name.
+  std::vector<std::string> given;
 };
 
 /// Shortest round-trip text of a double (%.17g trimmed where %.12g already round-trips).

@@ -1,0 +1,144 @@
+#!/usr/bin/env python3
+"""reference/check.py fails or refuses what it must: a NaN, a missing values file, a missing row, a parameter
+set on the command line that nothing names, a stale code version, a --quick run checked as a full one, and
+results that do not record their settings; and passes the same values when nothing is wrong (so that each
+failure below is the one it names, not a broken fixture).
+
+The fixture is one target's values file, written in the drivers' format (experiments/frame/driver.cpp) into
+a temporary results folder, with values that satisfy the target's reference rows (its published numbers:
+this tests the checker, not a result) and each defect in turn. Run by ctest.
+"""
+import csv
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import pandas as pd
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CHECK = os.path.join(ROOT, "reference", "check.py")
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(ROOT, "reference"))
+import check  # noqa: E402
+
+TARGET = "H-gauss"  # every row a 'match' row, checked in --quick mode too
+
+
+def reference_rows():
+    df = pd.read_csv(os.path.join(ROOT, "reference", TARGET + ".csv"), comment="#", dtype=str,
+                     keep_default_na=False, skipinitialspace=True)
+    assert (df["expect"].replace("", "match") == "match").all(), "the fixture needs match rows only"
+    return list(zip(df["quantity"], df["published"].astype(float)))
+
+
+def write_values(folder, rows, name="values_fixture.csv", version="abc123", given="", quick=False):
+    os.makedirs(os.path.join(folder, TARGET), exist_ok=True)
+    with open(os.path.join(folder, TARGET, name), "w", newline="") as f:
+        f.write(f"# driver = fixture\n# target = {TARGET}\n# code_version = {version}\n# date = 2026-01-01T00:00:00Z\n"
+                f"# param.quick = {'true' if quick else 'false'}\n")
+        if given is not None:
+            f.write(f"# given = {given}\n")
+        w = csv.writer(f)
+        w.writerow(["quantity", "value", "note"])
+        for q, v in rows:
+            w.writerow([q, repr(v), "fixture"])
+
+
+def run_check(folder, quick=False):
+    """(exit code, {quantity: (status, note)}) of check.py on the fixture's target."""
+    cmd = [sys.executable, CHECK, "--results", folder, "--targets", TARGET] + (["--quick"] if quick else [])
+    out = subprocess.run(cmd, capture_output=True, text=True)
+    path = os.path.join(folder, "check.csv")
+    table = pd.read_csv(path, dtype=str, keep_default_na=False) if os.path.exists(path) else pd.DataFrame()
+    return out.returncode, {r["quantity"]: (r["status"], r["note"]) for _, r in table.iterrows()}
+
+
+class CheckRefuses(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+        self.rows = reference_rows()
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_good_values_pass(self):
+        write_values(self.dir, self.rows)
+        code, st = run_check(self.dir)
+        self.assertEqual(code, 0, st)
+        self.assertEqual({s for s, _ in st.values()}, {"PASS"})
+        self.assertEqual(set(st), {q for q, _ in self.rows})
+
+    def test_nan_fails(self):
+        bad = [(q, math.nan if i == 0 else v) for i, (q, v) in enumerate(self.rows)]
+        write_values(self.dir, bad)
+        code, st = run_check(self.dir)
+        self.assertEqual(code, 1)
+        self.assertEqual(st[bad[0][0]][0], "FAIL")
+        self.assertIn("not finite", st[bad[0][0]][1])
+        self.assertTrue(all(st[q][0] == "PASS" for q, _ in self.rows[1:]))
+
+    def test_missing_file_fails_every_row(self):
+        os.makedirs(os.path.join(self.dir, TARGET))
+        code, st = run_check(self.dir)
+        self.assertEqual(code, 1)
+        self.assertEqual({s for s, _ in st.values()}, {"FAIL"})
+        self.assertEqual(len(st), len(self.rows))
+
+    def test_missing_row_fails(self):
+        write_values(self.dir, self.rows[1:])
+        code, st = run_check(self.dir)
+        self.assertEqual(code, 1)
+        self.assertEqual(st[self.rows[0][0]][0], "FAIL")
+        self.assertIn("no reproduced value", st[self.rows[0][0]][1])
+
+    def test_overridden_parameter_is_refused_by_name(self):
+        write_values(self.dir, self.rows, given="dp")
+        code, st = run_check(self.dir)
+        self.assertEqual(code, 1)
+        for status, note in st.values():
+            self.assertEqual(status, "FAIL")
+            self.assertIn("refused", note)
+            self.assertIn("--dp", note)
+            self.assertIn("values_fixture.csv", note)
+
+    def test_stale_code_version_is_refused(self):
+        half = len(self.rows) // 2
+        write_values(self.dir, self.rows[:half], name="values_one.csv", version="new111")
+        write_values(self.dir, self.rows[half:], name="values_two.csv", version="old000")
+        code, st = run_check(self.dir)
+        self.assertEqual(code, 1)
+        for status, note in st.values():
+            self.assertEqual(status, "FAIL")
+            self.assertIn("different code versions", note)
+            self.assertIn("old000", note)
+
+    def test_quick_run_is_refused_as_full_but_checked_as_quick(self):
+        write_values(self.dir, self.rows, given="quick", quick=True)
+        code, st = run_check(self.dir)
+        self.assertEqual(code, 1)
+        self.assertTrue(all(s == "FAIL" and "--quick run" in n for s, n in st.values()), st)
+        code, st = run_check(self.dir, quick=True)
+        self.assertEqual(code, 0, st)
+
+    def test_results_without_the_given_record_are_refused(self):
+        write_values(self.dir, self.rows, given=None)
+        code, st = run_check(self.dir)
+        self.assertEqual(code, 1)
+        self.assertTrue(all(s == "FAIL" and "does not record" in n for s, n in st.values()), st)
+
+    def test_a_targets_own_arguments_and_a_rows_settings_are_accepted(self):
+        self.assertEqual(check.target_arguments()["G-tab2"], {"table"})
+        src = check.Source("G-tab2/values.csv", {"code_version": "x", "given": "table"})
+        self.assertIsNone(check.refusal({"target": "G-tab2"}, src, {"table"}, False, {}))
+        src = check.Source("G-tab2/values.csv", {"code_version": "x", "given": "table dp"})
+        self.assertIn("--dp", check.refusal({"target": "G-tab2"}, src, {"table"}, False, {}))
+        self.assertIsNone(check.refusal({"target": "G-tab2", "settings": "dp"}, src, {"table"}, False, {}))
+
+
+if __name__ == "__main__":
+    result = unittest.main(exit=False, verbosity=2).result
+    sys.exit(0 if result.wasSuccessful() else 1)
