@@ -87,12 +87,15 @@ $(RESULTS)/check.csv: $(DONE) reference/check.py $(wildcard reference/*.csv)
 	$(PY) reference/check.py --results $(RESULTS) $(CHECK_FLAGS)
 
 # The main job: everything at paper resolution, then the check (fails the make on any FAIL), then the
-# timing table of the drivers (results/timings.csv, also when the check fails).
+# timing table of the drivers (results/timings.csv) and the report (paper/build/index.html), both also when
+# the check fails (the report shows the FAIL rows).
 figures: deps build
 	@date +%s > $(RESULTS)/.figures_start 2>/dev/null || { mkdir -p $(RESULTS); date +%s > $(RESULTS)/.figures_start; }
 	OMP_NUM_THREADS=1 $(MAKE) --no-print-directory -j $(NCORES) plots
 	@status=0; $(MAKE) --no-print-directory check || status=$$?; \
 	  $(MAKE) --no-print-directory timings; \
+	  $(PY) paper/build_report.py --results $(RESULTS) --figures $(FIGURES) --reference reference \
+	    --out paper/build/index.html || status=1; \
 	  echo "make figures: $$(( $$(date +%s) - $$(cat $(RESULTS)/.figures_start) )) s after the build"; exit $$status
 
 # results/timings.csv: every driver's timing_<driver>.csv (target, driver, wall seconds, particle-steps,
