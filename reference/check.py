@@ -175,7 +175,7 @@ def describe_tolerance(compare, tol):
             "ge": f">= published - {tol:g}"}[compare]
 
 
-def check_row(row, values, sources=None, allowed=frozenset(), quick_mode=False, mixed=None):
+def check_row(row, values, sources, allowed, quick_mode, mixed):
     target, q = row["target"], row["quantity"]
     published, tol, compare = float(row["published"]), float(row["tolerance"] or 0), row["compare"]
     reproduced = values.get((target, q))
@@ -184,10 +184,9 @@ def check_row(row, values, sources=None, allowed=frozenset(), quick_mode=False, 
            "tolerance": describe_tolerance(compare, tol), "source": row["source"]}
     if reproduced is None:
         return {**out, "status": "FAIL", "note": "no reproduced value (driver did not write it)"}
-    if sources is not None:
-        why = refusal(row, sources[(target, q)], allowed, quick_mode, mixed or {})
-        if why:
-            return {**out, "status": "FAIL", "note": f"refused: {why}"}
+    why = refusal(row, sources[(target, q)], allowed, quick_mode, mixed)
+    if why:
+        return {**out, "status": "FAIL", "note": f"refused: {why}"}
     if not math.isfinite(reproduced):
         return {**out, "status": "FAIL", "note": "reproduced value is not finite"}
     ok = within(compare, reproduced, published, tol)
