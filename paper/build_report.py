@@ -22,6 +22,7 @@ sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "experiments"))
 import targets as declaration  # noqa: E402  (experiments/targets.py: the reader of experiments/targets.mk)
 
+KIND_LABEL = {"reading": "the paper's: another reading", "erratum": "the paper's: erratum", "open": "open"}
 STATUS_COLOUR = {"PASS": "#1a7f37", "DISCREPANCY": "#9a6700", "FAIL": "#cf222e"}
 
 
@@ -45,7 +46,8 @@ def table_html(rows):
     body = []
     for _, r in rows.iterrows():
         colour = STATUS_COLOUR.get(r.status, "black")
-        status = f'<b style="color:{colour}">{html.escape(r.status)}</b>'
+        label = r.status + (f" ({KIND_LABEL[r.kind]})" if r.get("kind", "") in KIND_LABEL else "")
+        status = f'<b style="color:{colour}">{html.escape(label)}</b>'
         cells = [html.escape(str(c)) for c in (r.quantity, r.published, r.reproduced, r.tolerance)]
         cells += [status, html.escape(r.source), html.escape(r.note)]
         body.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
@@ -101,6 +103,8 @@ def main():
     check = pd.read_csv(check_path, dtype=str, keep_default_na=False)
     targets = report_targets(os.path.join(root, "paper", "targets.csv"))
     counts = check.status.value_counts()
+    kinds = check[check.status == "DISCREPANCY"].get("kind", pd.Series(dtype=str)).map(
+        {"reading": "paper", "erratum": "paper", "open": "open"}).value_counts()
 
     parts = [f"""<!doctype html><html><head><meta charset="utf-8"><title>SPH elastic dynamics: reproduction report</title>
 <style>body{{font-family:sans-serif;max-width:1200px;margin:auto;padding:1em;line-height:1.4}}
@@ -111,10 +115,13 @@ th{{background:#f3f3f3}}figure{{display:inline-block;margin:0.5em}}img{{max-widt
 <p>Gray, Monaghan &amp; Swift 2001; Hoover, Hoover &amp; Merritt 2004; Ismail 2009. Code version
 <code>{html.escape(code_version(root))}</code>. Every number below was computed by the drivers in
 <code>experiments/</code> and compared by <code>reference/check.py</code> with the published values in
-<code>reference/</code>. PASS: within the stated tolerance. DISCREPANCY: the published number does not reproduce; the
-note gives the analysis and the reading that does reproduce it, which is itself checked. FAIL: neither.</p>
+<code>reference/</code>. PASS: within the stated tolerance. DISCREPANCY: the published number does not reproduce, and
+our own value lies in the band its analysis predicts (checked); of two kinds: <i>the paper's</i>, where another reading of
+the same number, computed and checked, reproduces it, or the paper's own closed form gives our value (an erratum), and
+<i>open</i>, where no reading we compute reproduces it: our open question, not the paper's error. FAIL: any check of a
+row that does not hold.</p>
 <p class="summary">{len(check)} checks: {counts.get('PASS', 0)} PASS, {counts.get('DISCREPANCY', 0)} DISCREPANCY,
-{counts.get('FAIL', 0)} FAIL.</p>"""]
+{counts.get('FAIL', 0)} FAIL; of the discrepancies {kinds.get('paper', 0)} the paper's, {kinds.get('open', 0)} open.</p>"""]
     parts.append("<h2>Contents</h2><ul>" + "".join(
         f'<li><a href="#{t.target}">{html.escape(t.target)}: {html.escape(t.title)}</a></li>' for _, t in targets.iterrows())
                  + '<li><a href="#timings">Run times</a></li></ul>')

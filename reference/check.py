@@ -4,18 +4,30 @@
 Reference rows (one CSV per target, reference/<target>.csv; '#' lines are comments):
   target, quantity, published, unit, compare, tolerance, why_tolerance, source,
   expect, alt_quantity, analysis_value, explanation, quick
-compare:  abs  |reproduced - published| <= tolerance
-          rel  |reproduced - published| <= tolerance * |published|
-          le   reproduced <= published + tolerance   (a published bound or claim)
-          ge   reproduced >= published - tolerance
+compare:  abs     |reproduced - published| <= tolerance
+          rel     |reproduced - published| <= tolerance * |published|
+          le      reproduced <= published + tolerance   (a published bound or claim)
+          ge      reproduced >= published - tolerance
+          abs_le  |reproduced| <= published + tolerance (a bound on a signed error: 'within about 1%')
 expect:   match        out of tolerance is a FAIL
           discrepancy  the published number is known not to reproduce; the row is DISCREPANCY when it does
-                       not, and still FAILs unless the analysis holds: alt_quantity (a value the driver
-                       computes under the reading that does reproduce the published number) must match
-                       the published value, or, where no reading reproduces it, the reproduced value must
-                       match analysis_value (the number the analysis predicts) within the tolerance.
+                       not, and FAILs unless both checks of its analysis hold:
+                       1. its own value is bounded: the reproduced value lies in own_band ('lo..hi'), or, where
+                          own_band is empty, within the tolerance of analysis_value (the number the analysis
+                          predicts; abs for le/ge rows);
+                       2. by its kind (column kind):
+                          reading  another reading of the same published number reproduces it: alt_quantity (the
+                                   same quantity computed by the driver under that reading) must match the
+                                   published value within the tolerance;
+                          erratum  a closed form: the paper's own equations, evaluated exactly, give our value
+                                   (analysis_value) and not the printed one; no alternative;
+                          open     no reading we compute reproduces the number: our open question, not the
+                                   paper's error; no alternative.
+                       reading and erratum rows are the paper's discrepancies, open rows ours; the check table
+                       (column kind) and the summary count them apart.
 quick:    no = not checked in --quick mode (the quick run cannot resolve it); anything else = checked.
 settings  (optional column) parameters a row accepts set on the command line, separated by spaces.
+kind, own_band  (columns a file needs only when it has discrepancy rows) see expect.
 
 What a value was computed with counts too (the header of its values file, written by the driver frame):
 a row FAILs, by the name of the file and the setting, when the file records parameters set on the command
@@ -29,7 +41,7 @@ The targets are those declared in experiments/targets.mk: a reference file of an
 declared target without its reference file, stops the check (exit 1) before anything is compared.
 
 Reproduced values come from results/<target>/values_*.csv (quantity,value,note) written by the drivers.
-Writes <results>/check.csv with columns target,quantity,published,reproduced,tolerance,status,source,note,
+Writes <results>/check.csv with columns target,quantity,published,reproduced,tolerance,status,kind,source,note,
 prints the table and a summary, and exits 1 on any FAIL.
 """
 import argparse
@@ -45,7 +57,9 @@ sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "experiments"))
 import targets as declaration  # noqa: E402  (experiments/targets.py: the reader of experiments/targets.mk)
 
-OUT_COLUMNS = ["target", "quantity", "published", "reproduced", "tolerance", "status", "source", "note"]
+OUT_COLUMNS = ["target", "quantity", "published", "reproduced", "tolerance", "status", "kind", "source", "note"]
+KINDS = {"reading": "paper", "erratum": "paper", "open": "open"}  # kind -> whose discrepancy it is
+COMPARES = ("abs", "rel", "le", "ge", "abs_le")
 REF_COLUMNS = ["target", "quantity", "published", "unit", "compare", "tolerance", "why_tolerance", "source",
                "expect", "alt_quantity", "analysis_value", "explanation", "quick"]
 
@@ -80,10 +94,62 @@ def load_reference(ref_dir):
     if not frames:
         sys.exit(f"check: no reference files in {ref_dir}")
     ref = pd.concat(frames, ignore_index=True).fillna("")  # a column only some files have (settings): ""
+    for col in ("kind", "own_band"):
+        if col not in ref.columns:
+            ref[col] = ""
+    problems = [p for _, r in ref.iterrows() for p in row_problems(r)]
+    if problems:
+        sys.exit("check: malformed reference rows:\n  " + "\n  ".join(problems))
     dup = ref[ref.duplicated(["target", "quantity"], keep=False)]
     if len(dup):
         sys.exit(f"check: duplicate reference rows:\n{dup[['target', 'quantity']]}")
     return ref
+
+
+def parse_band(text):
+    """'lo..hi' -> (lo, hi); None if empty. Raises ValueError if malformed."""
+    if not text:
+        return None
+    lo, sep, hi = text.partition("..")
+    if not sep or float(lo) > float(hi):
+        raise ValueError(f"own_band '{text}' is not 'lo..hi' with lo <= hi")
+    return float(lo), float(hi)
+
+
+def row_problems(r):
+    """What makes a reference row uncheckable (its file and quantity named), as a list of messages."""
+    where = f"reference/{r['ref_file']} {r['target']}/{r['quantity']}"
+    out = []
+    try:
+        float(r["published"]), float(r["tolerance"] or 0)
+    except ValueError:
+        out.append(f"{where}: published and tolerance must be numbers")
+    if r["compare"] not in COMPARES:
+        out.append(f"{where}: compare must be one of {', '.join(COMPARES)}, not '{r['compare']}'")
+    expect = r["expect"] or "match"
+    if expect == "match":
+        if r["kind"] or r["own_band"]:
+            out.append(f"{where}: kind and own_band belong to discrepancy rows")
+        return out
+    if expect != "discrepancy":
+        return out + [f"{where}: expect must be match or discrepancy, not '{expect}'"]
+    if r["kind"] not in KINDS:
+        out.append(f"{where}: a discrepancy row needs kind reading, erratum or open, not '{r['kind']}'")
+    if r["kind"] == "reading" and not r["alt_quantity"]:
+        out.append(f"{where}: a reading row needs alt_quantity (the reading that reproduces the number)")
+    if r["kind"] in ("erratum", "open") and r["alt_quantity"]:
+        out.append(f"{where}: an {r['kind']} row has no alternative reading (alt_quantity must be empty)")
+    if r["kind"] == "erratum" and not r["analysis_value"]:
+        out.append(f"{where}: an erratum row needs analysis_value (the exact value of the paper's equations)")
+    try:
+        band = parse_band(r["own_band"])
+        if band is None and not r["analysis_value"]:
+            out.append(f"{where}: a discrepancy row must bound its own value (own_band or analysis_value)")
+        if r["analysis_value"]:
+            float(r["analysis_value"])
+    except ValueError as e:
+        out.append(f"{where}: {e}")
+    return out
 
 
 def read_header(path):
@@ -167,19 +233,31 @@ def within(compare, reproduced, published, tol):
         return reproduced <= published + tol
     if compare == "ge":
         return reproduced >= published - tol
+    if compare == "abs_le":
+        return abs(reproduced) <= published + tol
     raise ValueError(f"unknown compare '{compare}'")
 
 
 def describe_tolerance(compare, tol):
     return {"abs": f"abs {tol:g}", "rel": f"rel {tol:g}", "le": f"<= published + {tol:g}",
-            "ge": f">= published - {tol:g}"}[compare]
+            "ge": f">= published - {tol:g}", "abs_le": f"|x| <= published + {tol:g}"}[compare]
+
+
+def own_value_bounded(row, reproduced, compare, tol):
+    """(ok, description) of a discrepancy row's own value against the band its analysis predicts."""
+    band = parse_band(row["own_band"])
+    if band:
+        return band[0] <= reproduced <= band[1], f"[{band[0]:g}, {band[1]:g}]"
+    a = float(row["analysis_value"])
+    mode = {"le": "abs", "ge": "abs", "abs_le": "abs"}.get(compare, compare)
+    return within(mode, reproduced, a, tol if tol else 1e-9), f"{a:g} ({describe_tolerance(mode, tol)})"
 
 
 def check_row(row, values, sources, allowed, quick_mode, mixed):
     target, q = row["target"], row["quantity"]
     published, tol, compare = float(row["published"]), float(row["tolerance"] or 0), row["compare"]
     reproduced = values.get((target, q))
-    out = {"target": target, "quantity": q, "published": row["published"],
+    out = {"target": target, "quantity": q, "published": row["published"], "kind": "",
            "reproduced": "" if reproduced is None else f"{reproduced:.6g}",
            "tolerance": describe_tolerance(compare, tol), "source": row["source"]}
     if reproduced is None:
@@ -194,27 +272,33 @@ def check_row(row, values, sources, allowed, quick_mode, mixed):
     if expect == "match":
         note = row["why_tolerance"] if ok else f"out of tolerance; {row['why_tolerance']}"
         return {**out, "status": "PASS" if ok else "FAIL", "note": note}
-    if expect != "discrepancy":
-        raise ValueError(f"{target}/{q}: expect must be match or discrepancy, not '{expect}'")
     if ok:
         return {**out, "status": "PASS",
                 "note": "recorded as a discrepancy but now reproduces: review reference/" + row["ref_file"]}
-    # The discrepancy must be explained by a check that can itself fail.
-    alt, analysis = row["alt_quantity"], row["analysis_value"]
-    if alt:
+    # The discrepancy must be explained by checks that can themselves fail: our own value inside the band
+    # the analysis predicts, and, for a reading, the same number under that reading.
+    kind = row["kind"]
+    bounded, band = own_value_bounded(row, reproduced, compare, tol)
+    if not bounded:
+        return {**out, "status": "FAIL", "kind": kind,
+                "note": f"reproduced value outside the band its analysis predicts, {band}"}
+    if kind == "reading":
+        alt = row["alt_quantity"]
         alt_value = values.get((target, alt))
         if alt_value is None:
-            return {**out, "status": "FAIL", "note": f"discrepancy reading '{alt}' not computed"}
+            return {**out, "status": "FAIL", "kind": kind, "note": f"discrepancy reading '{alt}' not computed"}
         if not within(compare, alt_value, published, tol):
-            return {**out, "status": "FAIL",
+            return {**out, "status": "FAIL", "kind": kind,
                     "note": f"discrepancy reading '{alt}' = {alt_value:.6g} does not reproduce the published value either"}
-        return {**out, "status": "DISCREPANCY", "note": f"{row['explanation']} [{alt} = {alt_value:.6g}]"}
-    if analysis:
-        a = float(analysis)
-        if not within("abs" if compare in ("le", "ge") else compare, reproduced, a, tol if tol else 1e-9):
-            return {**out, "status": "FAIL", "note": f"reproduced differs from the analysis value {a:g}"}
-        return {**out, "status": "DISCREPANCY", "note": row["explanation"]}
-    raise ValueError(f"{target}/{q}: a discrepancy row needs alt_quantity or analysis_value")
+        return {**out, "status": "DISCREPANCY", "kind": kind,
+                "note": f"{row['explanation']} [{alt} = {alt_value:.6g}; own value in {band}]"}
+    return {**out, "status": "DISCREPANCY", "kind": kind, "note": f"{row['explanation']} [own value in {band}]"}
+
+
+def discrepancy_kinds(table):
+    """'x the paper's (a reading or an erratum), y open' for the DISCREPANCY rows of a check table."""
+    kinds = table[table.status == "DISCREPANCY"]["kind"].map(KINDS).value_counts()
+    return f"{int(kinds.get('paper', 0))} the paper's, {int(kinds.get('open', 0))} open"
 
 
 def main():
@@ -250,7 +334,8 @@ def main():
     unreferenced = sorted(k for k in values if k not in referenced and (not args.targets or k[0] in args.targets))
     counts = table["status"].value_counts()
     n = {s: int(counts.get(s, 0)) for s in ("PASS", "DISCREPANCY", "FAIL")}
-    print(f"\ncheck: {len(rows)} rows: {n['PASS']} PASS, {n['DISCREPANCY']} DISCREPANCY, {n['FAIL']} FAIL"
+    print(f"\ncheck: {len(rows)} rows: {n['PASS']} PASS, {n['DISCREPANCY']} DISCREPANCY "
+          f"({discrepancy_kinds(table)}), {n['FAIL']} FAIL"
           f"  ({len(unreferenced)} further reproduced values without a published counterpart) -> {out_path}")
     for _, r in table[table.status == "FAIL"].iterrows():
         print(f"  FAIL {r.target}/{r.quantity}: {r.note}")

@@ -139,6 +139,61 @@ class CheckRefuses(unittest.TestCase):
         self.assertIsNone(check.refusal({"target": "G-tab2", "settings": "dp"}, src, {"table"}, False, {}))
 
 
+def discrepancy_row(**kw):
+    """A reference row as load_reference gives it: published 10 (rel 0.01), our value expected near 12."""
+    row = {"target": "T", "quantity": "q", "published": "10", "unit": "", "compare": "rel", "tolerance": "0.01",
+           "why_tolerance": "w", "source": "s", "expect": "discrepancy", "alt_quantity": "", "analysis_value": "",
+           "explanation": "e", "quick": "", "kind": "open", "own_band": "11..13", "ref_file": "T.csv"}
+    row.update(kw)
+    return row
+
+
+def check_one(row, values):
+    src = check.Source("T/values.csv", {"code_version": "x", "given": ""})
+    return check.check_row(row, values, {k: src for k in values}, set(), False, {})
+
+
+class DiscrepancyContract(unittest.TestCase):
+    """A DISCREPANCY row bounds its own value, and a reading reproduces the published number."""
+
+    def test_open_row_in_its_band_is_a_discrepancy_of_its_kind(self):
+        out = check_one(discrepancy_row(), {("T", "q"): 12.0})
+        self.assertEqual((out["status"], out["kind"]), ("DISCREPANCY", "open"))
+
+    def test_own_value_outside_the_band_fails_whatever_the_kind(self):
+        for kw in ({}, {"kind": "reading", "alt_quantity": "q_alt"}, {"own_band": "", "analysis_value": "12"}):
+            out = check_one(discrepancy_row(**kw), {("T", "q"): 20.0, ("T", "q_alt"): 10.0})
+            self.assertEqual(out["status"], "FAIL", kw)
+            self.assertIn("outside the band", out["note"])
+
+    def test_a_reading_must_reproduce_the_published_number(self):
+        row = discrepancy_row(kind="reading", alt_quantity="q_alt")
+        self.assertEqual(check_one(row, {("T", "q"): 12.0, ("T", "q_alt"): 10.05})["status"], "DISCREPANCY")
+        out = check_one(row, {("T", "q"): 12.0, ("T", "q_alt"): 11.0})
+        self.assertEqual(out["status"], "FAIL")
+        self.assertIn("does not reproduce", out["note"])
+        self.assertEqual(check_one(row, {("T", "q"): 12.0})["status"], "FAIL")  # the reading not computed
+
+    def test_a_nan_fails_a_discrepancy_row_even_when_its_reading_holds(self):
+        row = discrepancy_row(kind="reading", alt_quantity="q_alt")
+        self.assertEqual(check_one(row, {("T", "q"): math.nan, ("T", "q_alt"): 10.0})["status"], "FAIL")
+
+    def test_abs_le_bounds_the_size_of_a_signed_error(self):
+        self.assertTrue(check.within("abs_le", -0.012, 0.01, 0.005))
+        self.assertFalse(check.within("abs_le", -0.02, 0.01, 0.005))
+        self.assertTrue(check.within("le", -0.02, 0.01, 0.005))  # why a signed error needs abs_le
+
+    def test_malformed_discrepancy_rows_are_named(self):
+        cases = {"kind": ("", "needs kind"), "alt_quantity": ("x", "no alternative"),
+                 "own_band": ("13..11", "lo <= hi")}
+        for col, (value, message) in cases.items():
+            problems = check.row_problems(discrepancy_row(**{col: value}))
+            self.assertTrue(any(message in p and "reference/T.csv T/q" in p for p in problems), (col, problems))
+        self.assertTrue(any("must bound its own value" in p for p in check.row_problems(discrepancy_row(own_band=""))))
+        self.assertTrue(any("needs alt_quantity" in p for p in check.row_problems(discrepancy_row(kind="reading"))))
+        self.assertEqual(check.row_problems(discrepancy_row()), [])
+
+
 if __name__ == "__main__":
     result = unittest.main(exit=False, verbosity=2).result
     sys.exit(0 if result.wasSuccessful() else 1)
