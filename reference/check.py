@@ -12,8 +12,10 @@ compare:  abs     |reproduced - published| <= tolerance
 expect:   match        out of tolerance is a FAIL
           discrepancy  the published number is known not to reproduce; the row is DISCREPANCY when it does
                        not, and FAILs unless both checks of its analysis hold:
-                       1. its own value is bounded: the reproduced value lies in own_band ('lo..hi'), or, where
-                          own_band is empty, within the tolerance of analysis_value (the number the analysis
+                       1. its own value is bounded: the reproduced value lies in own_band ('lo..hi', each end a
+                          number or a reproduced quantity of the same target with an optional factor,
+                          '1.191*T_theory_H2_mu0.6': a relation the analysis predicts, tested in the same run), or,
+                          where own_band is empty, within the tolerance of analysis_value (the number the analysis
                           predicts; abs for le/ge rows);
                        2. by its kind (column kind):
                           reading  another reading of the same published number reproduces it: alt_quantity (the
@@ -106,14 +108,41 @@ def load_reference(ref_dir):
     return ref
 
 
+def parse_bound(text):
+    """One end of an own_band: a number, or a reproduced quantity of the same target with an optional factor
+    ('1.191*T_theory_H2_mu0.6'): (factor, quantity or None, number). Raises ValueError if malformed."""
+    factor, star, name = text.strip().partition("*")
+    if not star:
+        try:
+            return 1.0, None, float(factor)
+        except ValueError:
+            factor, name = "1", factor
+    name = name.strip()
+    if not name or any(c in name for c in " ,*"):
+        raise ValueError(f"own_band end '{text}' is neither a number nor [factor*]quantity")
+    return float(factor), name, 0.0
+
+
 def parse_band(text):
-    """'lo..hi' -> (lo, hi); None if empty. Raises ValueError if malformed."""
+    """'lo..hi' -> (lo, hi), each end as parse_bound gives it; None if empty. Raises ValueError if malformed."""
     if not text:
         return None
     lo, sep, hi = text.partition("..")
-    if not sep or float(lo) > float(hi):
+    if not sep:
+        raise ValueError(f"own_band '{text}' is not 'lo..hi'")
+    band = parse_bound(lo), parse_bound(hi)
+    if band[0][1] is None and band[1][1] is None and band[0][2] > band[1][2]:
         raise ValueError(f"own_band '{text}' is not 'lo..hi' with lo <= hi")
-    return float(lo), float(hi)
+    return band
+
+
+def band_end(bound, target, values):
+    """The value of one end of an own_band (None if it names a quantity the driver did not write)."""
+    factor, name, number = bound
+    if name is None:
+        return number
+    v = values.get((target, name))
+    return None if v is None else factor * v
 
 
 def row_problems(r):
@@ -243,11 +272,16 @@ def describe_tolerance(compare, tol):
             "ge": f">= published - {tol:g}", "abs_le": f"|x| <= published + {tol:g}"}[compare]
 
 
-def own_value_bounded(row, reproduced, compare, tol):
+def own_value_bounded(row, reproduced, compare, tol, values):
     """(ok, description) of a discrepancy row's own value against the band its analysis predicts."""
     band = parse_band(row["own_band"])
     if band:
-        return band[0] <= reproduced <= band[1], f"[{band[0]:g}, {band[1]:g}]"
+        lo, hi = (band_end(b, row["target"], values) for b in band)
+        if lo is None or hi is None:
+            return False, f"{row['own_band']} (a quantity of the band was not computed)"
+        ok = lo <= reproduced <= hi and math.isfinite(lo) and math.isfinite(hi)
+        named = any(b[1] for b in band)
+        return ok, f"[{lo:.6g}, {hi:.6g}]" + (f" = {row['own_band']}" if named else "")
     a = float(row["analysis_value"])
     mode = {"le": "abs", "ge": "abs", "abs_le": "abs"}.get(compare, compare)
     return within(mode, reproduced, a, tol if tol else 1e-9), f"{a:g} ({describe_tolerance(mode, tol)})"
@@ -278,7 +312,7 @@ def check_row(row, values, sources, allowed, quick_mode, mixed):
     # The discrepancy must be explained by checks that can themselves fail: our own value inside the band
     # the analysis predicts, and, for a reading, the same number under that reading.
     kind = row["kind"]
-    bounded, band = own_value_bounded(row, reproduced, compare, tol)
+    bounded, band = own_value_bounded(row, reproduced, compare, tol, values)
     if not bounded:
         return {**out, "status": "FAIL", "kind": kind,
                 "note": f"reproduced value outside the band its analysis predicts, {band}"}

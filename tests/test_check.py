@@ -166,6 +166,15 @@ class DiscrepancyContract(unittest.TestCase):
             self.assertEqual(out["status"], "FAIL", kw)
             self.assertIn("outside the band", out["note"])
 
+    def test_a_band_may_name_quantities_of_the_same_run(self):
+        row = discrepancy_row(own_band="theory..1.2*theory")
+        self.assertEqual(check_one(row, {("T", "q"): 12.0, ("T", "theory"): 11.0})["status"], "DISCREPANCY")
+        self.assertEqual(check_one(row, {("T", "q"): 12.0, ("T", "theory"): 9.0})["status"], "FAIL")  # 12 > 10.8
+        out = check_one(row, {("T", "q"): 12.0})
+        self.assertEqual(out["status"], "FAIL")
+        self.assertIn("not computed", out["note"])
+        self.assertTrue(any("neither a number" in p for p in check.row_problems(discrepancy_row(own_band="a b..2"))))
+
     def test_a_reading_must_reproduce_the_published_number(self):
         row = discrepancy_row(kind="reading", alt_quantity="q_alt")
         self.assertEqual(check_one(row, {("T", "q"): 12.0, ("T", "q_alt"): 10.05})["status"], "DISCREPANCY")

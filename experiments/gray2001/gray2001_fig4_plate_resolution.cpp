@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
     std::vector<Run> runs;
     for (int n : ns) runs.push_back({n, alpha});
     for (double a : alphas) runs.push_back({ns.front(), a});
-    std::vector<double> T_of_n;
+    std::vector<double> T_of_n, A_of_n;  // period and first amplitude at the study's alpha, by n
     for (const Run& run : runs) {
       scenes::PlateRunSpec s;
       s.plate.H = 2.0;
@@ -69,13 +69,16 @@ int main(int argc, char** argv) {
       d.value("T_" + tag.str(), T, "period from the zero crossings");
       d.value("amplitude_" + tag.str(), a1, "first extreme of the tip displacement");
       d.value("decay_per_period_" + tag.str(), decay, "1 - (second extreme / first)^2");
-      if (run.alpha == alpha) T_of_n.push_back(T);
+      if (run.alpha == alpha) T_of_n.push_back(T), A_of_n.push_back(a1);
     }
-    // Convergence: successive differences of the period shrink.
-    const std::size_t m = T_of_n.size();
-    if (m >= 3) {
-      const double d1 = std::abs(T_of_n[m - 2] - T_of_n[m - 3]), d2 = std::abs(T_of_n[m - 1] - T_of_n[m - 2]);
-      d.value("period_change_ratio_finest", d2 / d1, "|T(n3) - T(n2)| / |T(n2) - T(n1)|: < 1 when converging");
+    // Convergence ('the period and amplitude of the oscillations are converging'): successive differences shrink.
+    const auto change_ratio = [](const std::vector<double>& x) {
+      const std::size_t m = x.size();
+      return std::abs(x[m - 1] - x[m - 2]) / std::abs(x[m - 2] - x[m - 3]);
+    };
+    if (T_of_n.size() >= 3) {
+      d.value("period_change_ratio_finest", change_ratio(T_of_n), "|T(n3) - T(n2)| / |T(n2) - T(n1)|: < 1 when converging");
+      d.value("amplitude_change_ratio_finest", change_ratio(A_of_n), "|A(n3) - A(n2)| / |A(n2) - A(n1)| of the first extreme: < 1 when converging");
     }
     d.value("T_finest_over_theory", T_of_n.back() / T_theory, "finest-resolution period / thin-plate theory (H)");
   });
