@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
 
 #include "core/diagnostics.hpp"
@@ -35,11 +36,15 @@ Slab make_slab(const SlabSpec& s, double rho0) {
   slab.height = ny * s.dp;
   if (ny < 3 || 2.0 * s.band >= slab.length - 2.0 * s.dp)
     throw std::invalid_argument("slab: need at least 3 particles across and free particles between the bands");
+  if (!(s.jitter >= 0) || s.jitter >= 0.1) throw std::invalid_argument("slab: need 0 <= jitter < 0.1 (in dp)");
   const double m = rho0 * s.dp * s.dp;
+  std::mt19937_64 random(s.seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (long j = 0; j < ny; ++j)
     for (long i = 0; i < nx; ++i) {
-      const sph::Vec2 x((i + 0.5) * s.dp, (j + 0.5) * s.dp);
-      const bool left = x.x() < s.band, right = x.x() > slab.length - s.band;
+      sph::Vec2 x((i + 0.5) * s.dp, (j + 0.5) * s.dp);
+      const bool left = x.x() < s.band, right = x.x() > slab.length - s.band;  // of the lattice site
+      if (s.jitter > 0) x += s.jitter * s.dp * sph::Vec2(unit(random), unit(random));
       if (left || right) {
         (left ? slab.left_band : slab.right_band).push_back(slab.body.size());
         slab.body.add(x, sph::Vec2::Zero(), m, rho0, sph::Motion::Driven, sph::Vec2(left ? -s.end_accel : s.end_accel, 0.0));

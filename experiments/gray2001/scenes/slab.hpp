@@ -21,6 +21,11 @@ struct SlabSpec {
   double band = 0.2;          ///< driven particles: centre within `band` of an end (Sec 7.3)
   double end_accel = 2.5e-6;  ///< acceleration of EACH end, outward (READING: see the slab driver)
   double margin = 2.0;        ///< room around the slab in the cell-list box (sizing only)
+  /// Ensembles (CHOSEN, beyond the paper): every particle displaced by a uniform random amount of up to
+  /// jitter x dp in each direction, from `seed`. The tensile instability grows from whatever seed the
+  /// lattice carries, round-off included, so one run's parting time is one draw; jitter = 0 is the lattice.
+  double jitter = 0;
+  unsigned seed = 0;
 };
 
 struct Slab {
