@@ -8,6 +8,7 @@
 // paragraph follows the statement that the remaining simulations use continuity densities); the summed
 // variant is reported beside it, and so is the continuity run with <v>_M (no tensile instability): it
 // separates the smooth spurious torque of Sec. III from the loss the instability adds.
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -17,6 +18,37 @@
 
 using namespace sph;
 
+namespace {
+
+// Sec. VI's rotating disk (radius R, density rho, lambda = eta, rotating at omega), the paper's closed forms
+// checked against each other in the plane law sigma_rr = (lambda + 2 eta) u' + lambda u/r, sigma_tt =
+// lambda u' + (lambda + 2 eta) u/r, by central differences of the printed u_r (units rho = omega = R = eta = 1).
+void write_disk_closed_forms(Driver& d) {
+  const double lam = 1, eta = 1, R = 1, h = 1e-5;
+  auto u_printed = [&](double r) { return r / 6.0 * (R * R - 2.0 * r * r / 3.0); };
+  auto srr_printed = [&](double r) { return 5.0 / 12.0 * (R * R - r * r); };
+  auto stt_printed = [&](double r) { return 5.0 / 12.0 * (R * R - 3.0 * r * r / 5.0); };
+  auto srr_of_u = [&](double r) {
+    const double du = (u_printed(r + h) - u_printed(r - h)) / (2 * h);
+    return (lam + 2 * eta) * du + lam * u_printed(r) / r;
+  };
+  d.value("disk_u_r_printed_sigma_rr_edge_over_centre", srr_of_u(R) / srr_of_u(h),
+          "sigma_rr(R) / sigma_rr(0) of the printed u_r through the plane law, lambda = eta (the free edge needs 0)");
+  d.value("disk_sigma_rr_printed_edge_over_centre", srr_printed(R) / srr_printed(0), "sigma_rr(R) / sigma_rr(0) as printed");
+  double residual = 0;  // radial equilibrium of the printed stresses: d sigma_rr/dr + (sigma_rr - sigma_tt)/r + rho omega^2 r
+  for (int i = 1; i < 100; ++i) {
+    const double r = R * i / 100.0;
+    const double dsrr = (srr_printed(r + h) - srr_printed(r - h)) / (2 * h);
+    residual = std::max(residual, std::abs(dsrr + (srr_printed(r) - stt_printed(r)) / r + r));
+  }
+  d.value("disk_printed_stresses_equilibrium_residual", residual, "max over r < R of the radial equilibrium residual / (rho omega^2 R)");
+  // The displacement the printed stresses imply: u = r eps_tt, eps_tt = ((lambda + 2 eta) s_tt - lambda s_rr) / (4 eta (lambda + eta)).
+  const double u_R = R * ((lam + 2 * eta) * stt_printed(R) - lam * srr_printed(R)) / (4 * eta * (lam + eta));
+  d.value("disk_u_r_printed_over_implied_at_R", u_printed(R) / u_R, "printed u_r(R) / the u_r(R) the printed stresses imply");
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   Driver d("hoover2004_fig4_hexagon_md_spam", "H-fig4", "rotating hexagon: MD and standard SPAM, L(t), snapshots");
   scenes::HexagonSetup s;
@@ -25,6 +57,7 @@ int main(int argc, char** argv) {
     if (d.quick() && !d.given("revolutions")) s.revolutions = 1.0 / 3.0;  // up to 120 degrees: the L rows
     if (d.quick() && !d.given("dt")) s.dt = 0.1;
     const double pi = std::acos(-1.0);
+    write_disk_closed_forms(d);
     s.snapshot_angles = {2 * pi / 3, 2 * pi};
     auto series = d.csv("series.csv", scenes::series_columns());
     auto snaps = d.csv("snapshots.csv", scenes::snapshot_columns());
