@@ -49,7 +49,7 @@ void Driver::write_timing(double wall_s, long long particle_steps) const {
 }
 
 RunInfo Driver::info() const {
-  RunInfo r{name_, target_, description_, {}};
+  RunInfo r{name_, target_, description_, {}, {}};
   for (const auto& [k, f] : recorders_) {
     r.parameters.emplace_back(k, f());
     if (given(k)) r.given.push_back(k);
