@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """X (beyond the paper): the cures for the tensile instability of the Gray et al. 2001 scheme -- none, artificial
 stress, XSPH, both -- on the plate (period error against thin-plate theory, broken or not), the colliding rings
-(fragments, restitution) and the slab (time the ends part, clumping time), with the wall time of each run."""
+(fragments, restitution) and the slab (time the ends part, clumping time), with the wall time of each run; and the
+cures of both formulations on Hoover et al.'s rotating hexagon (angular momentum lost by 120 degrees): Gray's four
+variants, molecular dynamics and the SPAM variants (X_hexagon)."""
 import matplotlib.pyplot as plt
 import numpy as np
 
@@ -47,3 +49,21 @@ ax.set_xticklabels(df.variant)
 ax.set_ylabel("wall time (s, one thread)")
 ax.legend()
 ps.save(fig, args.figures, "X", df)
+
+hx = ps.read(args.results, "hexagon.csv")
+fig, ax = plt.subplots(figsize=(8, 3.2))
+labels = [f"{r.formulation}: {r.variant}" for _, r in hx.iterrows()]
+loss = np.maximum(hx.L_loss_120deg.to_numpy(float), 1e-16)
+colours = ["C0" if f == "gray" else "C2" if f == "md" else "C1" for f in hx.formulation]
+ax.barh(np.arange(len(hx)), loss, color=colours)
+for i, (_, r) in enumerate(hx.iterrows()):
+    ax.text(loss[i] * 1.3, i, f"{r.L_loss_120deg:.2g}  ({r.wall_s:.2f} s{', broke' if r.broke else ''})", va="center",
+            fontsize=6)
+ax.set_yticks(np.arange(len(hx)))
+ax.set_yticklabels(labels, fontsize=7)
+ax.set_xscale("log")
+ax.set_xlim(1e-16, 10)
+ax.invert_yaxis()
+ax.set_xlabel("1 - L/L0 at 120 degrees (rotating hexagon, 217 particles; wall time of the run)")
+ax.set_title("Cures of both formulations on one scene: Gray (blue), SPAM (orange), molecular dynamics (green)", fontsize=8)
+ps.save(fig, args.figures, "X_hexagon", hx)

@@ -12,12 +12,20 @@
 //   slab   Figs 8-10 at dp = 0.064 (paper: 0.016; G-fig8 runs 0.032): the time the two driven ends part,
 //          and the clumping time (two free particles closer than 0.75 dp); reading of the acceleration as G-fig8
 //          (each end at 2.5e-6).
+//   hexagon  Hoover et al. 2004's rotating hexagon (217 particles, 0.1 at the vertices; H-fig4), where the SPAM
+//          cures are judged: the loss of angular momentum by 120 degrees (Sec. VI) and whether it stays in one
+//          piece, for Gray's four variants (gray2001/scenes/hexagon_gray.hpp: the material read as c0^2 =
+//          (lambda + eta)/rho0, mu = eta) and for molecular dynamics and the SPAM cures on the same lattice
+//          (standard, the averaged velocities <v> and <v>_M, pair torque scaling), so that both formulations'
+//          cures meet on one scene (hexagon.csv).
 // Every other parameter as the scene's own driver.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "frame/driver.hpp"
 #include "core/materials.hpp"
+#include "gray2001/scenes/hexagon_gray.hpp"
 #include "gray2001/scenes/plate_run.hpp"
 #include "gray2001/scenes/rings_run.hpp"
 #include "gray2001/scenes/slab.hpp"
@@ -108,5 +116,34 @@ int main(int argc, char** argv) {
     }
     d.value("slab_fracture_delay_both_over_xsph", slab_fracture_both / slab_fracture_xsph,
             "time the ends part with both cures / with XSPH only (the paper's new / standard algorithm)");
+
+    // The rotating hexagon, every formulation's cures on one scene.
+    auto hex = d.csv("hexagon.csv", {"formulation", "variant", "L_loss_120deg", "broke", "steps", "wall_s"});
+    sph::scenes::HexagonSetup hs;
+    for (const Variant& v : kVariants) {
+      scenes::GrayHexagonSpec gs;
+      gs.hexagon = hs;
+      gs.cfl = cfl;
+      gs.options = with_cures(gs.options, v);
+      const auto r = scenes::run_gray_hexagon(gs, std::string("cures hexagon ") + v.name);
+      const bool broke = r.max_fragments > 1 || !r.blow_up.empty();
+      hex.row("gray", v.name, r.L_loss, broke ? 1 : 0, r.steps, r.wall_s);
+      d.value(std::string("hexagon_L_loss_120deg_gray_") + v.name, r.L_loss, "1 - L/L0 at 120 degrees, Gray's scheme");
+      d.value(std::string("hexagon_broke_gray_") + v.name, broke ? 1.0 : 0.0, "more than one piece (or blew up) by 120 degrees");
+    }
+    hs.revolutions = 1.0 / 3.0;  // to 120 degrees
+    const double pi = std::acos(-1.0);
+    auto spam_row = [&](const std::string& formulation, const std::string& variant, const sph::scenes::HexagonRun& r) {
+      const double loss = 1.0 - r.L_ratio_at_angle(2 * pi / 3, hs.omega());
+      hex.row(formulation, variant, loss, r.failed ? 1 : 0, r.steps, r.wall_s);
+      d.value("hexagon_L_loss_120deg_" + formulation + "_" + variant, loss, "1 - L/L0 at 120 degrees");
+    };
+    spam_row("md", "md", sph::scenes::run_hexagon_md(hs));
+    for (const char* label : {"cont/v", "cont/shepard", "cont/monaghan_arith", "cont/v/pair_torque"}) {
+      const sph::SpamOptions o = sph::scenes::spam_options_from_label(label);
+      std::string name = o.label();
+      std::replace(name.begin(), name.end(), '/', '_');
+      spam_row("spam", name, sph::scenes::run_hexagon_spam(hs, o, name));
+    }
   });
 }
