@@ -51,3 +51,21 @@ TEST(Slab, NoJitterIsTheLatticeAndABadJitterIsRefused) {
   bad.jitter = 0.2;
   EXPECT_THROW(scenes::make_slab(bad, 1.0), std::invalid_argument);
 }
+
+#include "gray2001/scenes/hexagon_gray.hpp"
+
+TEST(GrayHexagon, MaterialIsHooversLatticeAndAShortRunStaysWholeAndFinite) {
+  const sph::SpamParams spam;
+  const sph::GrayParameters p = scenes::gray_hexagon_scheme(spam, 0.5);
+  EXPECT_NEAR(p.rho0 * p.c0 * p.c0, spam.lambda + spam.eta, 1e-14);  // the 2D bulk modulus
+  EXPECT_NEAR(p.mu * p.rho0 * p.c0 * p.c0, spam.eta, 1e-14);          // mu in units of rho0 c0^2
+  scenes::GrayHexagonSpec s;
+  s.hexagon.shells = 3;
+  s.angle = 0.3;
+  const auto r = scenes::run_gray_hexagon(s, "test hexagon");
+  EXPECT_TRUE(r.blow_up.empty()) << r.blow_up;
+  EXPECT_EQ(r.particles, 37u);  // 1 + 3n + 3n^2
+  EXPECT_EQ(r.max_fragments, 1u);
+  EXPECT_TRUE(std::isfinite(r.L_loss));
+  EXPECT_LT(std::abs(r.L_loss), 0.5);
+}
