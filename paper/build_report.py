@@ -21,6 +21,8 @@ import pandas as pd
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "experiments"))
 import targets as declaration  # noqa: E402  (experiments/targets.py: the reader of experiments/targets.mk)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "reference"))
+import check as reference_check  # noqa: E402  (reference/check.py: whose discrepancy each kind is, KINDS)
 
 KIND_LABEL = {"reading": "the paper's: another reading", "erratum": "the paper's: erratum", "open": "open"}
 STATUS_COLOUR = {"PASS": "#1a7f37", "DISCREPANCY": "#9a6700", "FAIL": "#cf222e"}
@@ -103,8 +105,7 @@ def main():
     check = pd.read_csv(check_path, dtype=str, keep_default_na=False)
     targets = report_targets(os.path.join(root, "paper", "targets.csv"))
     counts = check.status.value_counts()
-    kinds = check[check.status == "DISCREPANCY"].get("kind", pd.Series(dtype=str)).map(
-        {"reading": "paper", "erratum": "paper", "open": "open"}).value_counts()
+    kinds = check[check.status == "DISCREPANCY"].get("kind", pd.Series(dtype=str)).map(reference_check.KINDS).value_counts()
 
     parts = [f"""<!doctype html><html><head><meta charset="utf-8"><title>SPH elastic dynamics: reproduction report</title>
 <style>body{{font-family:sans-serif;max-width:1200px;margin:auto;padding:1em;line-height:1.4}}

@@ -65,6 +65,14 @@ class CheckRefuses(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
+    def assert_every_row_fails_saying(self, code, st, *parts):
+        self.assertEqual(code, 1)
+        self.assertEqual(len(st), len(self.rows))  # every row of the target reported, none silently dropped
+        for status, note in st.values():
+            self.assertEqual(status, "FAIL")
+            for part in parts:
+                self.assertIn(part, note)
+
     def test_good_values_pass(self):
         write_values(self.dir, self.rows)
         code, st = run_check(self.dir)
@@ -97,38 +105,23 @@ class CheckRefuses(unittest.TestCase):
 
     def test_overridden_parameter_is_refused_by_name(self):
         write_values(self.dir, self.rows, given="dp")
-        code, st = run_check(self.dir)
-        self.assertEqual(code, 1)
-        for status, note in st.values():
-            self.assertEqual(status, "FAIL")
-            self.assertIn("refused", note)
-            self.assertIn("--dp", note)
-            self.assertIn("values_fixture.csv", note)
+        self.assert_every_row_fails_saying(*run_check(self.dir), "refused", "--dp", "values_fixture.csv")
 
     def test_stale_code_version_is_refused(self):
         half = len(self.rows) // 2
         write_values(self.dir, self.rows[:half], name="values_one.csv", version="new111")
         write_values(self.dir, self.rows[half:], name="values_two.csv", version="old000")
-        code, st = run_check(self.dir)
-        self.assertEqual(code, 1)
-        for status, note in st.values():
-            self.assertEqual(status, "FAIL")
-            self.assertIn("different code versions", note)
-            self.assertIn("old000", note)
+        self.assert_every_row_fails_saying(*run_check(self.dir), "different code versions", "old000")
 
     def test_quick_run_is_refused_as_full_but_checked_as_quick(self):
         write_values(self.dir, self.rows, given="quick", quick=True)
-        code, st = run_check(self.dir)
-        self.assertEqual(code, 1)
-        self.assertTrue(all(s == "FAIL" and "--quick run" in n for s, n in st.values()), st)
+        self.assert_every_row_fails_saying(*run_check(self.dir), "--quick run")
         code, st = run_check(self.dir, quick=True)
         self.assertEqual(code, 0, st)
 
     def test_results_without_the_given_record_are_refused(self):
         write_values(self.dir, self.rows, given=None)
-        code, st = run_check(self.dir)
-        self.assertEqual(code, 1)
-        self.assertTrue(all(s == "FAIL" and "does not record" in n for s, n in st.values()), st)
+        self.assert_every_row_fails_saying(*run_check(self.dir), "does not record")
 
     def test_a_targets_own_arguments_and_a_rows_settings_are_accepted(self):
         self.assertEqual(check.target_arguments()["G-tab2"], {"table"})

@@ -78,9 +78,9 @@ int main(int argc, char** argv) {
   d.param("sample-dt", sample_dt, "interval of the measurements (fracture, neck)");
   d.param("runs", runs, "which of the runs eps = 0 and eps = 0.3 to do (e.g. --runs 0.3 for a fine eps = 0.3 run only)");
   d.param("study-dps", study_dps, "further spacings of the eps = 0.3 resolution study (0: none)");
-  scenes::SlabSpec lattice;  // the perfect lattice by default; a jitter and seed draw one member of an ensemble
-  d.param("jitter", lattice.jitter, "random displacement of every particle, up to this x dp (0: the lattice; SlabSpec::jitter)");
-  d.param("seed", lattice.seed, "seed of the jitter");
+  scenes::SlabSpec seeding;  // the perfect lattice by default; a jitter and seed draw one member of an ensemble
+  d.param("jitter", seeding.jitter, "random displacement of every particle, up to this x dp (0: the lattice; SlabSpec::jitter)");
+  d.param("seed", seeding.seed, "seed of the jitter");
 
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("dp")) dp = 0.064;
@@ -91,8 +91,8 @@ int main(int argc, char** argv) {
       s.slab.dp = spacing;
       s.slab.band = band;
       s.slab.end_accel = end_accel;
-      s.slab.jitter = lattice.jitter;
-      s.slab.seed = lattice.seed;
+      s.slab.jitter = seeding.jitter;
+      s.slab.seed = seeding.seed;
       s.scheme = scheme;
       s.options.artificial_stress = eps > 0;
       s.scheme.eps_artificial = eps;
