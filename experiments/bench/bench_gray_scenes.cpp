@@ -47,8 +47,8 @@ int main(int argc, char** argv) {
   d.param("cfl", cfl, "time-step factor of every run");
   std::vector<std::string> scenes{"rings", "plate", "slab"};
   d.param("scenes", scenes, "scenes to run, comma-separated (make bench-peer: rings)")
-      ->delimiter(',')
-      ->check(CLI::IsMember({"rings", "plate", "slab"}));
+      .delimiter(',')
+      .one_of({"rings", "plate", "slab"});
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("steps")) steps = 5;
     auto out = d.csv("bench_gray_scenes.csv", {"scene", "variant", "particles", "steps", "threads", "wall_s",

@@ -2,6 +2,7 @@
 
 #include "core/run_loop.hpp"
 
+#include <CLI/CLI.hpp>
 #include <omp.h>
 
 #include <chrono>
@@ -10,25 +11,76 @@
 
 namespace sph {
 
+namespace {
+
+template <class T>
+std::string to_text(const T& v) {
+  if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) return format_number(static_cast<double>(v));
+  else if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
+  else if constexpr (std::is_same_v<T, std::string>) return v;
+  else {
+    std::ostringstream s;
+    bool first = true;
+    for (const auto& x : v) { s << (first ? "" : " ") << to_text(x); first = false; }
+    return s.str();
+  }
+}
+
+}  // namespace
+
+DriverOption& DriverOption::expected(int min, int max) {
+  o_->expected(min, max);
+  return *this;
+}
+DriverOption& DriverOption::delimiter(char c) {
+  o_->delimiter(c);
+  return *this;
+}
+DriverOption& DriverOption::one_of(const std::vector<std::string>& allowed) {
+  o_->check(CLI::IsMember(allowed));
+  return *this;
+}
+
+Driver::~Driver() = default;
+
+template <class T>
+DriverOption Driver::param(const std::string& name, T& var, const std::string& help) {
+  auto* opt = app_->add_option("--" + name, var, help)->capture_default_str();
+  recorders_.emplace_back(name, [&var] { return to_text(var); });
+  return DriverOption(opt);
+}
+// The parameter types of the drivers (a type missing here is a link error naming it).
+template DriverOption Driver::param(const std::string&, bool&, const std::string&);
+template DriverOption Driver::param(const std::string&, int&, const std::string&);
+template DriverOption Driver::param(const std::string&, unsigned&, const std::string&);
+template DriverOption Driver::param(const std::string&, long&, const std::string&);
+template DriverOption Driver::param(const std::string&, double&, const std::string&);
+template DriverOption Driver::param(const std::string&, std::string&, const std::string&);
+template DriverOption Driver::param(const std::string&, std::vector<int>&, const std::string&);
+template DriverOption Driver::param(const std::string&, std::vector<double>&, const std::string&);
+template DriverOption Driver::param(const std::string&, std::vector<std::string>&, const std::string&);
+
+bool Driver::given(const std::string& name) const { return app_->count("--" + name) > 0; }
+
 Driver::Driver(std::string name, std::string target, std::string description)
     : name_(std::move(name)), target_(std::move(target)), description_(std::move(description)),
-      app_(description_ + "\n(target " + target_ + "; writes CSV with a header recording every parameter)", name_),
+      app_(std::make_unique<CLI::App>(description_ + "\n(target " + target_ + "; writes CSV with a header recording every parameter)", name_)),
       out_("results/" + target_) {
-  app_.add_flag("--quick", quick_, "reduced resolution/extent for CI; checks the same claims");
-  app_.add_option("--out", out_, "output directory")->capture_default_str();
+  app_->add_flag("--quick", quick_, "reduced resolution/extent for CI; checks the same claims");
+  app_->add_option("--out", out_, "output directory")->capture_default_str();
   recorders_.emplace_back("quick", [this] { return to_text(quick_); });
 }
 
-CLI::Option* Driver::flag(const std::string& name, bool& var, const std::string& help) {
+DriverOption Driver::flag(const std::string& name, bool& var, const std::string& help) {
   recorders_.emplace_back(name, [&var] { return to_text(var); });
-  return app_.add_flag("--" + name, var, help);
+  return DriverOption(app_->add_flag("--" + name, var, help));
 }
 
 int Driver::run(int argc, char** argv, const std::function<void()>& body) {
   try {
-    app_.parse(argc, argv);
+    app_->parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app_.exit(e);
+    return app_->exit(e);
   }
   try {
     const auto start = std::chrono::steady_clock::now();

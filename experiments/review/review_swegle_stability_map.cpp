@@ -58,8 +58,8 @@ int main(int argc, char** argv) {
   d.param("delta", delta, "finite-difference displacement (units of dp) of the linearisation");
   d.param("sigma", sigma, "magnitude of the uniform stress (units of rho c^2; only the sign matters)");
   d.param("chain", chain, "particles of the periodic chain for the alternating-mode check (even)");
-  d.param("gray-h-over-dp", gray_h, "h/dp marked for the cubic spline (Gray et al. 2001: 1 and 1.5)")->expected(1, 20);
-  d.param("ismail-h-over-dp", ismail_h, "h/dp marked for the support-1 functions (Ismail 2009: 1.5 and 5.5)")->expected(1, 20);
+  d.param("gray-h-over-dp", gray_h, "h/dp marked for the cubic spline (Gray et al. 2001: 1 and 1.5)").expected(1, 20);
+  d.param("ismail-h-over-dp", ismail_h, "h/dp marked for the support-1 functions (Ismail 2009: 1.5 and 5.5)").expected(1, 20);
 
   return d.run(argc, argv, [&] {
     if (d.quick()) {
