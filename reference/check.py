@@ -87,11 +87,21 @@ def load_reference(ref_dir):
                  f"{', '.join(lacking)}")
     frames = []
     for path in paths:
-        df = pd.read_csv(path, comment="#", dtype=str, keep_default_na=False, skipinitialspace=True)
+        lines = data_lines(path)
+        try:
+            df = pd.read_csv(path, comment="#", dtype=str, keep_default_na=False, skipinitialspace=True)
+        except (pd.errors.ParserError, pd.errors.EmptyDataError) as e:
+            sys.exit(f"check: {path}: not a CSV table ({e})")
+        if not lines:
+            sys.exit(f"check: {path}: no header line")
         missing = [c for c in REF_COLUMNS if c not in df.columns]
         if missing:
-            sys.exit(f"check: {path} lacks columns {missing}")
+            sys.exit(f"check: {path}:{lines[0]}: the header lacks columns {missing}")
+        if len(lines) != len(df) + 1:  # a '#' inside a field, or a quoted line break: rows cannot be located
+            sys.exit(f"check: {path}: {len(df)} rows read from {len(lines) - 1} data lines ('#' is a comment "
+                     f"anywhere on a line; quoted line breaks are not allowed)")
         df["ref_file"] = os.path.basename(path)
+        df["ref_line"] = lines[1:]
         frames.append(df)
     if not frames:
         sys.exit(f"check: no reference files in {ref_dir}")
@@ -104,8 +114,16 @@ def load_reference(ref_dir):
         sys.exit("check: malformed reference rows:\n  " + "\n  ".join(problems))
     dup = ref[ref.duplicated(["target", "quantity"], keep=False)]
     if len(dup):
-        sys.exit(f"check: duplicate reference rows:\n{dup[['target', 'quantity']]}")
+        sys.exit("check: duplicate reference rows:\n  " + "\n  ".join(
+            f"reference/{r['ref_file']}:{r['ref_line']} {r['target']}/{r['quantity']}" for _, r in dup.iterrows()))
     return ref
+
+
+def data_lines(path):
+    """The 1-based line numbers of a reference file's header and rows, as pandas reads it with comment='#'
+    (lines that are blank or start with '#' are skipped), so that a refusal can name the line."""
+    with open(path) as f:
+        return [i for i, line in enumerate(f, 1) if line.strip() and not line.lstrip().startswith("#")]
 
 
 def parse_bound(text):
@@ -147,12 +165,22 @@ def band_end(bound, target, values):
 
 def row_problems(r):
     """What makes a reference row uncheckable (its file and quantity named), as a list of messages."""
-    where = f"reference/{r['ref_file']} {r['target']}/{r['quantity']}"
+    line = f":{r['ref_line']}" if r.get("ref_line", "") != "" else ""
+    where = f"reference/{r['ref_file']}{line} {r['target']}/{r['quantity']}"
     out = []
+    for col in ("published", "tolerance"):
+        try:
+            if not math.isfinite(float(r[col] or (0 if col == "tolerance" else "x"))):
+                raise ValueError
+        except ValueError:
+            out.append(f"{where}: {col} must be a finite number, not '{r[col]}'")
     try:
-        float(r["published"]), float(r["tolerance"] or 0)
+        if float(r["tolerance"] or 0) < 0:
+            out.append(f"{where}: tolerance must not be negative")
     except ValueError:
-        out.append(f"{where}: published and tolerance must be numbers")
+        pass
+    if r["target"] != r["ref_file"][:-len(".csv")]:
+        out.append(f"{where}: the row's target is not its file's ({r['ref_file']})")
     if r["compare"] not in COMPARES:
         out.append(f"{where}: compare must be one of {', '.join(COMPARES)}, not '{r['compare']}'")
     expect = r["expect"] or "match"

@@ -2,13 +2,15 @@
 """reference/check.py fails or refuses what it must: a NaN, a missing values file, a missing row, a parameter
 set on the command line that nothing names, a stale code version, a --quick run checked as a full one, and
 results that do not record their settings; and passes the same values when nothing is wrong (so that each
-failure below is the one it names, not a broken fixture).
+failure below is the one it names, not a broken fixture). A malformed reference file (a missing column, a
+duplicated row, a non-numeric tolerance, an unknown compare mode) stops it, naming file and line.
 
 The fixture is one target's values file, written in the drivers' format (experiments/frame/driver.cpp) into
 a temporary results folder, with values that satisfy the target's reference rows (its published numbers:
 this tests the checker, not a result) and each defect in turn. Run by ctest.
 """
 import csv
+import io
 import math
 import os
 import subprocess
@@ -194,6 +196,76 @@ class DiscrepancyContract(unittest.TestCase):
         self.assertTrue(any("must bound its own value" in p for p in check.row_problems(discrepancy_row(own_band=""))))
         self.assertTrue(any("needs alt_quantity" in p for p in check.row_problems(discrepancy_row(kind="reading"))))
         self.assertEqual(check.row_problems(discrepancy_row()), [])
+
+
+def csv_line(fields):
+    out = io.StringIO()
+    csv.writer(out, lineterminator="\n").writerow(fields)
+    return out.getvalue()
+
+
+class ReferenceFilesRefused(unittest.TestCase):
+    """A malformed reference file stops the check, naming the file and the line: a missing column, a
+    duplicated row, a tolerance that is not a number, an unknown compare mode."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.ref = self.tmp.name
+        for name in os.listdir(os.path.join(ROOT, "reference")):
+            if name.endswith(".csv"):
+                with open(os.path.join(ROOT, "reference", name)) as f, open(os.path.join(self.ref, name), "w") as g:
+                    g.write(f.read())
+        with open(os.path.join(self.ref, TARGET + ".csv")) as f:
+            self.lines = f.read().splitlines(True)
+        self.header = next(i for i, l in enumerate(self.lines) if l.strip() and not l.startswith("#"))
+        self.first = next(i for i, l in enumerate(self.lines) if i > self.header and l.strip() and not l.startswith("#"))
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def refusal(self, lines):
+        with open(os.path.join(self.ref, TARGET + ".csv"), "w") as f:
+            f.writelines(lines)
+        with self.assertRaises(SystemExit) as e:
+            check.load_reference(self.ref)
+        return str(e.exception.code)
+
+    def edit_first_row(self, column, value):
+        cols = next(csv.reader([self.lines[self.header]]))
+        row = next(csv.reader([self.lines[self.first]]))
+        row[cols.index(column)] = value
+        lines = list(self.lines)
+        lines[self.first] = csv_line(row)
+        return lines
+
+    def test_the_unchanged_copy_loads(self):
+        self.assertGreater(len(check.load_reference(self.ref)), 0)
+
+    def test_a_missing_column(self):
+        cols = next(csv.reader([self.lines[self.header]]))
+        i = cols.index("compare")
+        lines = [csv_line([c for j, c in enumerate(next(csv.reader([l]))) if j != i])
+                 if k >= self.header and l.strip() and not l.startswith("#") else l for k, l in enumerate(self.lines)]
+        msg = self.refusal(lines)
+        self.assertIn(f"{TARGET}.csv:{self.header + 1}", msg)
+        self.assertIn("compare", msg)
+
+    def test_a_duplicated_row(self):
+        lines = self.lines + [self.lines[self.first]]
+        msg = self.refusal(lines)
+        self.assertIn("duplicate", msg)
+        self.assertIn(f"{TARGET}.csv:{self.first + 1} ", msg)
+        self.assertIn(f"{TARGET}.csv:{len(lines)} ", msg)
+
+    def test_a_tolerance_that_is_not_a_number(self):
+        msg = self.refusal(self.edit_first_row("tolerance", "0.0x1"))
+        self.assertIn(f"{TARGET}.csv:{self.first + 1} ", msg)
+        self.assertIn("tolerance must be a finite number", msg)
+
+    def test_an_unknown_compare_mode(self):
+        msg = self.refusal(self.edit_first_row("compare", "relative"))
+        self.assertIn(f"{TARGET}.csv:{self.first + 1} ", msg)
+        self.assertIn("compare must be one of", msg)
 
 
 if __name__ == "__main__":
