@@ -32,8 +32,9 @@ settings  (optional column) parameters a row accepts set on the command line, se
 kind, own_band  (columns a file needs only when it has discrepancy rows) see expect.
 
 What a value was computed with counts too (the header of its values file, written by the driver frame):
-a row FAILs, by the name of the file and the setting, when the file records parameters set on the command
-line ('# given = ...') other than the target's own arguments in experiments/targets.mk, --quick in --quick
+a row FAILs, by the name of the file and the setting, when the run that wrote the file did not complete (its
+driver's completion record timing_<driver>.csv, written last, is missing or of another code version), when the
+file records parameters set on the command line ('# given = ...') other than the target's own arguments in experiments/targets.mk, --quick in --quick
 mode, and the row's settings; when the file is a --quick run and the check is not; when the file has no
 'given' record (results older than it: rerun); and when the values files of one target come from different
 code versions (stale results mixed with new ones). A reproduced value that is not finite FAILs every row,
@@ -225,27 +226,50 @@ def read_header(path):
 class Source:
     """Where a value comes from: its values file and what the file's header records about the run."""
 
-    def __init__(self, path, meta):
+    def __init__(self, path, meta, completion=None):
         self.path = path
         self.code_version = meta.get("code_version", "")
         self.given = None if "given" not in meta else set(meta["given"].split())
         self.quick = meta.get("param.quick", "false") == "true"
+        # The driver's completion record (timing_<driver>.csv, written last by the driver frame): its header,
+        # or None when the run did not complete (it failed, or was interrupted).
+        self.completion = completion
+
+    def incomplete(self):
+        """Why the run that wrote this file is not known to have completed (None if it is)."""
+        record = "timing_" + os.path.basename(self.path)[len("values_"):]
+        if self.completion is None:
+            return f"{self.path}: its run did not complete (no {record}, which the driver writes last): rerun the target"
+        if self.completion.get("code_version", "") != self.code_version:
+            return (f"{self.path}: its completion record {record} is of another code version "
+                    f"({self.completion.get('code_version', '')}): rerun the target")
+        return None
 
 
 def load_values(results_dir):
-    """{(target, quantity): value} and {(target, quantity): Source}."""
-    values, sources = {}, {}
+    """{(target, quantity): value}, {(target, quantity): Source} and {target: why some of its values could not
+    be read} (a values file cut short by an interrupted run: its rows then FAIL naming it)."""
+    values, sources, unreadable = {}, {}, {}
     for path in sorted(glob.glob(os.path.join(results_dir, "*", "values_*.csv"))):
         target = os.path.basename(os.path.dirname(path))
-        source = Source(os.path.relpath(path, results_dir), read_header(path))
-        df = pd.read_csv(path, comment="#", dtype={"quantity": str, "note": str}, keep_default_na=False)
+        record = os.path.join(os.path.dirname(path), "timing_" + os.path.basename(path)[len("values_"):])
+        source = Source(os.path.relpath(path, results_dir), read_header(path),
+                        read_header(record) if os.path.exists(record) else None)
+        try:
+            df = pd.read_csv(path, comment="#", dtype={"quantity": str, "note": str}, keep_default_na=False)
+            if not {"quantity", "value"} <= set(df.columns):
+                raise ValueError("no quantity,value header")
+        except (pd.errors.ParserError, pd.errors.EmptyDataError, ValueError) as e:
+            unreadable.setdefault(target, []).append(f"{source.path} unreadable ({e})" +
+                                                     (f"; {source.incomplete()}" if source.incomplete() else ""))
+            continue
         for _, r in df.iterrows():
             key = (target, r["quantity"])
             if key in values:
                 sys.exit(f"check: {target}/{r['quantity']} written twice ({path})")
             values[key] = float(r["value"])
             sources[key] = source
-    return values, sources
+    return values, sources, unreadable
 
 
 def target_arguments():
@@ -265,6 +289,9 @@ def mixed_versions(sources):
 def refusal(row, source, allowed, quick_mode, mixed):
     """Why a value must not be checked against this row (None if it may)."""
     target = row["target"]
+    unfinished = source.incomplete()
+    if unfinished:
+        return unfinished
     if target in mixed:
         return f"values of {target} from different code versions ({', '.join(mixed[target])}): stale results, rerun the target"
     if source.given is None:
@@ -315,7 +342,7 @@ def own_value_bounded(row, reproduced, compare, tol, values):
     return within(mode, reproduced, a, tol if tol else 1e-9), f"{a:g} ({describe_tolerance(mode, tol)})"
 
 
-def check_row(row, values, sources, allowed, quick_mode, mixed):
+def check_row(row, values, sources, allowed, quick_mode, mixed, unreadable=None):
     target, q = row["target"], row["quantity"]
     published, tol, compare = float(row["published"]), float(row["tolerance"] or 0), row["compare"]
     reproduced = values.get((target, q))
@@ -323,7 +350,8 @@ def check_row(row, values, sources, allowed, quick_mode, mixed):
            "reproduced": "" if reproduced is None else f"{reproduced:.6g}",
            "tolerance": describe_tolerance(compare, tol), "source": row["source"]}
     if reproduced is None:
-        return {**out, "status": "FAIL", "note": "no reproduced value (driver did not write it)"}
+        why = "; ".join((unreadable or {}).get(target, [])) or "driver did not write it"
+        return {**out, "status": "FAIL", "note": f"no reproduced value ({why})"}
     why = refusal(row, sources[(target, q)], allowed, quick_mode, mixed)
     if why:
         return {**out, "status": "FAIL", "note": f"refused: {why}"}
@@ -372,7 +400,7 @@ def main():
     args = ap.parse_args()
 
     ref = load_reference(args.reference)
-    values, sources = load_values(args.results)
+    values, sources, unreadable = load_values(args.results)
     arguments, mixed = target_arguments(), mixed_versions(sources)
     rows = []
     for _, r in ref.iterrows():
@@ -380,7 +408,7 @@ def main():
             continue
         if args.quick and r["quick"].strip().lower() == "no":
             continue
-        rows.append(check_row(r, values, sources, arguments.get(r["target"], set()), args.quick, mixed))
+        rows.append(check_row(r, values, sources, arguments.get(r["target"], set()), args.quick, mixed, unreadable))
     out_path = os.path.join(args.results, "check.csv")
     os.makedirs(args.results, exist_ok=True)
     with open(out_path, "w", newline="") as f:

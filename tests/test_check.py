@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """reference/check.py fails or refuses what it must: a NaN, a missing values file, a missing row, a parameter
-set on the command line that nothing names, a stale code version, a --quick run checked as a full one, and
-results that do not record their settings; and passes the same values when nothing is wrong (so that each
+set on the command line that nothing names, a stale code version, a --quick run checked as a full one,
+results that do not record their settings, and a run that did not complete (no completion record); and passes the same values when nothing is wrong (so that each
 failure below is the one it names, not a broken fixture). A malformed reference file (a missing column, a
 duplicated row, a non-numeric tolerance, an unknown compare mode) stops it, naming file and line.
 
@@ -36,8 +36,15 @@ def reference_rows():
     return list(zip(df["quantity"], df["published"].astype(float)))
 
 
-def write_values(folder, rows, name="values_fixture.csv", version="abc123", given="", quick=False):
+def write_values(folder, rows, name="values_fixture.csv", version="abc123", given="", quick=False,
+                 completed_as=""):
+    """A values file, and the completion record of its run (of code version `completed_as`, by default the
+    file's own; None: the run did not complete)."""
     os.makedirs(os.path.join(folder, TARGET), exist_ok=True)
+    if completed_as is not None:
+        with open(os.path.join(folder, TARGET, "timing_" + name[len("values_"):]), "w") as f:
+            f.write(f"# driver = fixture\n# code_version = {completed_as or version}\n"
+                    f"target,driver,wall_s,particle_steps,threads\n{TARGET},fixture,1,0,1\n")
     with open(os.path.join(folder, TARGET, name), "w", newline="") as f:
         f.write(f"# driver = fixture\n# target = {TARGET}\n# code_version = {version}\n# date = 2026-01-01T00:00:00Z\n"
                 f"# param.quick = {'true' if quick else 'false'}\n")
@@ -121,15 +128,21 @@ class CheckRefuses(unittest.TestCase):
         code, st = run_check(self.dir, quick=True)
         self.assertEqual(code, 0, st)
 
+    def test_a_run_that_did_not_complete_is_refused(self):
+        write_values(self.dir, self.rows, completed_as=None)
+        self.assert_every_row_fails_saying(*run_check(self.dir), "did not complete", "values_fixture.csv")
+        write_values(self.dir, self.rows, completed_as="old000")  # the record of an earlier run
+        self.assert_every_row_fails_saying(*run_check(self.dir), "another code version", "old000")
+
     def test_results_without_the_given_record_are_refused(self):
         write_values(self.dir, self.rows, given=None)
         self.assert_every_row_fails_saying(*run_check(self.dir), "does not record")
 
     def test_a_targets_own_arguments_and_a_rows_settings_are_accepted(self):
         self.assertEqual(check.target_arguments()["G-tab2"], {"table"})
-        src = check.Source("G-tab2/values.csv", {"code_version": "x", "given": "table"})
+        src = check.Source("G-tab2/values.csv", {"code_version": "x", "given": "table"}, {"code_version": "x"})
         self.assertIsNone(check.refusal({"target": "G-tab2"}, src, {"table"}, False, {}))
-        src = check.Source("G-tab2/values.csv", {"code_version": "x", "given": "table dp"})
+        src = check.Source("G-tab2/values.csv", {"code_version": "x", "given": "table dp"}, {"code_version": "x"})
         self.assertIn("--dp", check.refusal({"target": "G-tab2"}, src, {"table"}, False, {}))
         self.assertIsNone(check.refusal({"target": "G-tab2", "settings": "dp"}, src, {"table"}, False, {}))
 
@@ -144,7 +157,7 @@ def discrepancy_row(**kw):
 
 
 def check_one(row, values):
-    src = check.Source("T/values.csv", {"code_version": "x", "given": ""})
+    src = check.Source("T/values.csv", {"code_version": "x", "given": ""}, {"code_version": "x"})
     return check.check_row(row, values, {k: src for k in values}, set(), False, {})
 
 

@@ -85,6 +85,7 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
   try {
     const auto start = std::chrono::steady_clock::now();
     const long long work0 = particle_steps_taken();
+    forget_completion();
     body();
     write_timing(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                  particle_steps_taken() - work0);
@@ -95,8 +96,22 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
   }
 }
 
+std::filesystem::path Driver::completion_record() const { return out_ / ("timing_" + name_ + ".csv"); }
+
+void Driver::forget_completion() const {
+  std::error_code ec;
+  std::filesystem::remove(completion_record(), ec);
+  if (ec) throw std::runtime_error("cannot remove the completion record " + completion_record().string() + ": " + ec.message());
+}
+
+void Driver::retarget(const std::string& target) {
+  target_ = target;
+  if (!given("out")) out_ = "results/" + target_;
+  forget_completion();
+}
+
 void Driver::write_timing(double wall_s, long long particle_steps) const {
-  CsvWriter t(out_ / ("timing_" + name_ + ".csv"), info(), {"target", "driver", "wall_s", "particle_steps", "threads"});
+  CsvWriter t(completion_record(), info(), {"target", "driver", "wall_s", "particle_steps", "threads"});
   t.row(target_, name_, wall_s, static_cast<double>(particle_steps), omp_get_max_threads());
 }
 

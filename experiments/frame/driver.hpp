@@ -65,10 +65,7 @@ class Driver {
   bool quick() const { return quick_; }
   /// Sets the target id for a driver that serves several targets (e.g. Tables 1 and 2); call before
   /// writing anything. The default output directory follows unless --out was given.
-  void retarget(const std::string& target) {
-    target_ = target;
-    if (!given("out")) out_ = "results/" + target_;
-  }
+  void retarget(const std::string& target);
   /// True when the user set --<name> on the command line (so --quick must not override it).
   bool given(const std::string& name) const;
   const std::filesystem::path& out_dir() const { return out_; }
@@ -81,8 +78,12 @@ class Driver {
 
  private:
   /// timing_<driver>.csv in the output directory: the wall time of the run and the particle-steps its time
-  /// loops took (core/run_loop.hpp), for results/timings.csv.
+  /// loops took (core/run_loop.hpp), for results/timings.csv. It is also the run's completion record:
+  /// removed before the body starts and written only after it has returned, so that a run that fails, blows
+  /// up unhandled or is interrupted leaves its other files without it, and reference/check.py refuses them.
   void write_timing(double wall_s, long long particle_steps) const;
+  std::filesystem::path completion_record() const;
+  void forget_completion() const;
   std::string name_, target_, description_;
   std::unique_ptr<CLI::App> app_;
   bool quick_ = false;
