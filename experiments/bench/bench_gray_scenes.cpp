@@ -41,10 +41,10 @@ Timing time_run(sph::ElasticBody body, const sph::GrayParameters& p, const sph::
 int main(int argc, char** argv) {
   sph::Driver d("bench_gray_scenes", "bench", "Throughput of the Gray 2001 scheme on the rings and plate scenes");
   int steps = 200, max_threads = 2;
-  d.param("steps", steps, "timed steps per run (after 5 warm-up steps)");
-  d.param("max-threads", max_threads, "largest thread count (runs 1 and this)");
+  d.param("steps", steps, "timed steps per run (after 5 warm-up steps)").positive();
+  d.param("max-threads", max_threads, "largest thread count (runs 1 and this)").positive();
   double cfl = sph::GrayParameters{}.cfl;  // the scheme's default: the step sets how often the pairs are re-collected
-  d.param("cfl", cfl, "time-step factor of every run");
+  d.param("cfl", cfl, "time-step factor of every run").positive();
   std::vector<std::string> scenes{"rings", "plate", "slab"};
   d.param("scenes", scenes, "scenes to run, comma-separated (make bench-peer: rings)")
       .delimiter(',')

@@ -15,9 +15,9 @@ int main(int argc, char** argv) {
   Driver d("bench_hexagon", "bench", "rotating hexagon benchmark");
   scenes::HexagonSetup s;
   int steps = 2000;
-  d.param("shells", s.shells, "hexagon shells n");
-  d.param("dt", s.dt, "RK4 time step");
-  d.param("steps", steps, "RK4 steps per variant");
+  d.param("shells", s.shells, "hexagon shells n").positive();
+  d.param("dt", s.dt, "RK4 time step").positive();
+  d.param("steps", steps, "RK4 steps per variant").positive();
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("steps")) steps = 100;
     s.revolutions = steps * s.dt / s.revolution_time();

@@ -14,7 +14,7 @@
 int main(int argc, char** argv) {
   sph::Driver d("bench_tl_bar", "bench", "1D total Lagrangian SPH bar: time loop and matrix build");
   std::vector<double> spacings{0.15e-3, 0.075e-3, 0.0375e-3, 0.01875e-3};
-  d.param("ps", spacings, "particle spacings, m");
+  d.param("ps", spacings, "particle spacings, m").positive();
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("ps")) spacings = {0.6e-3, 0.3e-3};
     const double L = 0.15, rho = 8000, p0 = 1e5;

@@ -6,7 +6,9 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cmath>
 #include <exception>
+#include <fstream>
 #include <iostream>
 
 namespace sph {
@@ -41,13 +43,57 @@ DriverOption& DriverOption::one_of(const std::vector<std::string>& allowed) {
   return *this;
 }
 
+DriverOption& DriverOption::bound(const char* relation, double limit, bool (*holds)(double, double)) {
+  std::ostringstream want;
+  want << relation << " " << format_number(limit);
+  const std::string rule = want.str();
+  for (const double v : current_())
+    if (!holds(v, limit))
+      throw std::logic_error(o_->get_name() + ": the default " + format_number(v) + " is not " + rule);
+  // CLI11 applies the validator to each value of a list option: empty when it holds, else the message.
+  o_->check(CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double v;
+        std::size_t used = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          return text + " is not a number";
+        }
+        if (used != text.size()) return text + " is not a number";
+        if (!std::isfinite(v)) return text + " is not a finite number";
+        if (!holds(v, limit)) return text + " is out of range: it must be " + rule;
+        return "";
+      },
+      rule));
+  return *this;
+}
+
+DriverOption& DriverOption::above(double lo) { return bound(">", lo, [](double v, double l) { return v > l; }); }
+DriverOption& DriverOption::at_least(double lo) { return bound(">=", lo, [](double v, double l) { return v >= l; }); }
+DriverOption& DriverOption::below(double hi) { return bound("<", hi, [](double v, double l) { return v < l; }); }
+DriverOption& DriverOption::at_most(double hi) { return bound("<=", hi, [](double v, double l) { return v <= l; }); }
+
 Driver::~Driver() = default;
+
+// The numbers a parameter holds (none for text): what a bound of DriverOption tests its default with.
+template <class T>
+std::vector<double> numbers_of(const T& v) {
+  if constexpr (std::is_arithmetic_v<T>) return {static_cast<double>(v)};
+  else if constexpr (std::is_same_v<T, std::string>) return {};
+  else {
+    std::vector<double> out;
+    for (const auto& x : v)
+      for (double y : numbers_of(x)) out.push_back(y);
+    return out;
+  }
+}
 
 template <class T>
 DriverOption Driver::param(const std::string& name, T& var, const std::string& help) {
   auto* opt = app_->add_option("--" + name, var, help)->capture_default_str();
   recorders_.emplace_back(name, [&var] { return to_text(var); });
-  return DriverOption(opt);
+  return DriverOption(opt, [&var] { return numbers_of(var); });
 }
 // The parameter types of the drivers (a type missing here is a link error naming it).
 template DriverOption Driver::param(const std::string&, bool&, const std::string&);
@@ -73,7 +119,7 @@ Driver::Driver(std::string name, std::string target, std::string description)
 
 DriverOption Driver::flag(const std::string& name, bool& var, const std::string& help) {
   recorders_.emplace_back(name, [&var] { return to_text(var); });
-  return DriverOption(app_->add_flag("--" + name, var, help));
+  return DriverOption(app_->add_flag("--" + name, var, help), [] { return std::vector<double>{}; });
 }
 
 int Driver::run(int argc, char** argv, const std::function<void()>& body) {
@@ -85,7 +131,7 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
   try {
     const auto start = std::chrono::steady_clock::now();
     const long long work0 = particle_steps_taken();
-    forget_completion();
+    prepare_output();
     body();
     write_timing(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                  particle_steps_taken() - work0);
@@ -98,8 +144,19 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
 
 std::filesystem::path Driver::completion_record() const { return out_ / ("timing_" + name_ + ".csv"); }
 
-void Driver::forget_completion() const {
+void Driver::prepare_output() const {
+  // The output folder must be writable before anything runs: a run of hours must not fail at its first file.
   std::error_code ec;
+  std::filesystem::create_directories(out_, ec);
+  const auto probe = out_ / (".write_probe_" + name_);
+  bool writable = !ec;
+  if (writable) {
+    std::ofstream f(probe);
+    writable = static_cast<bool>(f << "probe\n");
+  }
+  std::filesystem::remove(probe, ec);
+  if (!writable)
+    throw std::runtime_error("--out " + out_.string() + ": cannot write into this folder" + (ec ? " (" + ec.message() + ")" : ""));
   std::filesystem::remove(completion_record(), ec);
   if (ec) throw std::runtime_error("cannot remove the completion record " + completion_record().string() + ": " + ec.message());
 }
@@ -107,7 +164,7 @@ void Driver::forget_completion() const {
 void Driver::retarget(const std::string& target) {
   target_ = target;
   if (!given("out")) out_ = "results/" + target_;
-  forget_completion();
+  prepare_output();
 }
 
 void Driver::write_timing(double wall_s, long long particle_steps) const {

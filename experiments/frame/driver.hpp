@@ -33,16 +33,28 @@ namespace sph {
 /// A registered option, for the few settings beyond name, variable and help.
 class DriverOption {
  public:
-  explicit DriverOption(CLI::Option* o) : o_(o) {}
+  /// `current` gives the bound variable's numbers (its default when a bound is declared; none for text).
+  DriverOption(CLI::Option* o, std::function<std::vector<double>()> current) : o_(o), current_(std::move(current)) {}
   /// A list option takes between min and max values.
   DriverOption& expected(int min, int max);
   /// A list option also takes its values as one comma-separated (or `c`-separated) word.
   DriverOption& delimiter(char c);
   /// Every value must be one of `allowed`.
   DriverOption& one_of(const std::vector<std::string>& allowed);
+  /// Every value (of a number or a list of numbers) must be > lo, >= lo, < hi, <= hi: a value out of range
+  /// stops the driver before it runs, naming the option, the value and the range. A default outside its
+  /// own range is a defect of the driver: it throws std::logic_error at once (every run finds it).
+  DriverOption& above(double lo);
+  DriverOption& at_least(double lo);
+  DriverOption& below(double hi);
+  DriverOption& at_most(double hi);
+  DriverOption& positive() { return above(0.0); }
+  DriverOption& non_negative() { return at_least(0.0); }
 
  private:
+  DriverOption& bound(const char* relation, double limit, bool (*holds)(double, double));
   CLI::Option* o_;
+  std::function<std::vector<double>()> current_;
 };
 
 class Driver {
@@ -83,7 +95,9 @@ class Driver {
   /// up unhandled or is interrupted leaves its other files without it, and reference/check.py refuses them.
   void write_timing(double wall_s, long long particle_steps) const;
   std::filesystem::path completion_record() const;
-  void forget_completion() const;
+  /// Before a run: the output folder exists and is writable (else an error naming --out), and the run's
+  /// completion record is removed.
+  void prepare_output() const;
   std::string name_, target_, description_;
   std::unique_ptr<CLI::App> app_;
   bool quick_ = false;

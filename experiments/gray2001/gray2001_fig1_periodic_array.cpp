@@ -61,14 +61,14 @@ int main(int argc, char** argv) {
   double pressure = 0.05, seed_amp = 1e-4;
   sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp): mu = 0.22, cfl = 0.5
   std::vector<double> h_over_dp{1.0, 1.5};
-  d.param("n", n, "particles per side of the periodic cell");
-  d.param("steps", steps, "time steps (Gray 2001: 10 000)");
+  d.param("n", n, "particles per side of the periodic cell").positive();
+  d.param("steps", steps, "time steps (Gray 2001: 10 000)").positive();
   d.param("pressure", pressure, "initial pressure P / (rho0 c0^2), positive");
-  d.param("mu", scheme.mu, "shear modulus");
-  d.param("cfl", scheme.cfl, "time-step factor");
-  d.param("seed-amplitude", seed_amp, "random initial displacement / dp");
-  d.param("h-over-dp", h_over_dp, "smoothing lengths to run");
-  d.param("sample-every", every, "steps between recorded order parameters");
+  d.param("mu", scheme.mu, "shear modulus").non_negative();
+  d.param("cfl", scheme.cfl, "time-step factor").positive();
+  d.param("seed-amplitude", seed_amp, "random initial displacement / dp").non_negative();
+  d.param("h-over-dp", h_over_dp, "smoothing lengths to run").positive();
+  d.param("sample-every", every, "steps between recorded order parameters").positive();
 
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("steps")) steps = 2000;

@@ -21,14 +21,14 @@ int main(int argc, char** argv) {
   std::vector<double> alphas{0.5, 2.0};
   double clamp = 2.0, Vf = 0.01, periods = 1.0;
   sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp); Fig 4's mu = 0.22 is the default
-  d.param("n", ns, "particles across H = 2");
-  d.param("alpha", scheme.alpha, "artificial viscosity alpha (= beta) of the resolution runs");
-  d.param("alphas-coarse", alphas, "further alpha (= beta) values run at the coarsest n");
-  d.param("clamp-length", clamp, "plate length held between the fixed layers");
-  d.param("cfl", scheme.cfl, "time-step factor");
-  d.param("mu", scheme.mu, "shear modulus (Fig 4: 0.22)");
+  d.param("n", ns, "particles across H = 2").positive();
+  d.param("alpha", scheme.alpha, "artificial viscosity alpha (= beta) of the resolution runs").non_negative();
+  d.param("alphas-coarse", alphas, "further alpha (= beta) values run at the coarsest n").non_negative();
+  d.param("clamp-length", clamp, "plate length held between the fixed layers").non_negative();
+  d.param("cfl", scheme.cfl, "time-step factor").positive();
+  d.param("mu", scheme.mu, "shear modulus (Fig 4: 0.22)").non_negative();
   d.param("Vf", Vf, "tip speed / c0 (Fig 4: 0.01)");
-  d.param("periods", periods, "half the longest run, in theoretical periods (runs stop at the second crossing)");
+  d.param("periods", periods, "half the longest run, in theoretical periods (runs stop at the second crossing)").positive();
 
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("n")) ns = {4, 6, 8};

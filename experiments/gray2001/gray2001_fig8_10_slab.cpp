@@ -65,21 +65,21 @@ int main(int argc, char** argv) {
   sph::GrayParameters scheme = scenes::slab_scheme();  // Sec 7.3: mu = 0.3, the yield 0.03
   double frame_every_eps0 = 20, frame_every = 50, sample_dt = 2.0;
   std::vector<double> study_dps{0.064, 0.032}, runs{0.0, 0.3};
-  d.param("dp", dp, "particle spacing (Sec 7.3: 0.016)");
-  d.param("end-accel", end_accel, "outward acceleration of EACH end band (reading: 5e-6 is the relative one)");
-  d.param("band", band, "width of the driven end bands (Sec 7.3: 0.2)");
-  d.param("mu", scheme.mu, "shear modulus (Sec 7.3: 0.3)");
-  d.param("yield", scheme.yield_stress, "von Mises yield strength (Sec 7.3: 0.03)");
-  d.param("cfl", scheme.cfl, "time-step factor");
-  d.param("t-max-eps0", t_max_eps0, "longest eps = 0 run");
-  d.param("t-max", t_max, "longest eps = 0.3 run");
-  d.param("frame-every-eps0", frame_every_eps0, "time between frames of the eps = 0 run");
-  d.param("frame-every", frame_every, "time between frames of the eps = 0.3 run");
-  d.param("sample-dt", sample_dt, "interval of the measurements (fracture, neck)");
-  d.param("runs", runs, "which of the runs eps = 0 and eps = 0.3 to do (e.g. --runs 0.3 for a fine eps = 0.3 run only)");
-  d.param("study-dps", study_dps, "further spacings of the eps = 0.3 resolution study (0: none)");
+  d.param("dp", dp, "particle spacing (Sec 7.3: 0.016)").positive();
+  d.param("end-accel", end_accel, "outward acceleration of EACH end band (reading: 5e-6 is the relative one)").non_negative();
+  d.param("band", band, "width of the driven end bands (Sec 7.3: 0.2)").non_negative();
+  d.param("mu", scheme.mu, "shear modulus (Sec 7.3: 0.3)").non_negative();
+  d.param("yield", scheme.yield_stress, "von Mises yield strength (Sec 7.3: 0.03)").positive();
+  d.param("cfl", scheme.cfl, "time-step factor").positive();
+  d.param("t-max-eps0", t_max_eps0, "longest eps = 0 run").positive();
+  d.param("t-max", t_max, "longest eps = 0.3 run").positive();
+  d.param("frame-every-eps0", frame_every_eps0, "time between frames of the eps = 0 run").positive();
+  d.param("frame-every", frame_every, "time between frames of the eps = 0.3 run").positive();
+  d.param("sample-dt", sample_dt, "interval of the measurements (fracture, neck)").positive();
+  d.param("runs", runs, "which of the runs eps = 0 and eps = 0.3 to do (e.g. --runs 0.3 for a fine eps = 0.3 run only)").non_negative();
+  d.param("study-dps", study_dps, "further spacings of the eps = 0.3 resolution study (0: none)").non_negative();
   scenes::SlabSpec seeding;  // the perfect lattice by default; a jitter and seed draw one member of an ensemble
-  d.param("jitter", seeding.jitter, "random displacement of every particle, up to this x dp (0: the lattice; SlabSpec::jitter)");
+  d.param("jitter", seeding.jitter, "random displacement of every particle, up to this x dp (0: the lattice; SlabSpec::jitter)").non_negative();
   d.param("seed", seeding.seed, "seed of the jitter");
 
   return d.run(argc, argv, [&] {

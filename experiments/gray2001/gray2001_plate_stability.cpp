@@ -20,14 +20,14 @@ int main(int argc, char** argv) {
   sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp) but mu:
   scheme.mu = 0.6;             // CHOSEN: the shortest periods of Table 1
   std::vector<double> cfls{0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0};
-  d.param("dp", dp, "particle spacing");
-  d.param("mu", scheme.mu, "shear modulus");
+  d.param("dp", dp, "particle spacing").positive();
+  d.param("mu", scheme.mu, "shear modulus").non_negative();
   d.param("Vf", Vf, "tip speed / c0");
-  d.param("cfl-values", cfls, "time-step factors of the sweep");
-  d.param("sweep-time", sweep_time, "simulated time of each sweep run");
-  d.param("long-periods", long_periods, "length of the long run in theoretical periods");
-  d.param("perturbation", perturbation, "random initial displacement / dp of the perturbed run");
-  d.param("cfl", scheme.cfl, "time-step factor of the long and perturbed runs");
+  d.param("cfl-values", cfls, "time-step factors of the sweep").positive();
+  d.param("sweep-time", sweep_time, "simulated time of each sweep run").positive();
+  d.param("long-periods", long_periods, "length of the long run in theoretical periods").positive();
+  d.param("perturbation", perturbation, "random initial displacement / dp of the perturbed run").non_negative();
+  d.param("cfl", scheme.cfl, "time-step factor of the long and perturbed runs").positive();
 
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("long-periods")) long_periods = 1.5;  // three crossings: first and last period

@@ -26,18 +26,18 @@ int main(int argc, char** argv) {
   double rings_dp = 0.2, slab_dp = 0.064, rings_time = 80, slab_time = 300, fast_dp = 0.1, fast_speed = 0.118;
   std::vector<double> cfls{0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0};
   double cfl = sph::GrayParameters{}.cfl;  // the scheme's default (parameters.hpp), used by the scene drivers
-  d.param("rings-dp", rings_dp, "particle spacing of the rings sweep");
-  d.param("slab-dp", slab_dp, "particle spacing of the slab sweep");
-  d.param("rings-time", rings_time, "simulated time of each rings sweep run");
-  d.param("slab-time", slab_time, "simulated time of each slab sweep run");
-  d.param("cfl-values", cfls, "time-step factors of the sweep");
-  d.param("fast-dp", fast_dp, "particle spacing of the fast collision");
-  d.param("fast-speed", fast_speed, "speed of each ring in the fast collision (paper: 0.059)");
-  d.param("cfl", cfl, "the factor of the scene drivers: the margins and the halved-step runs refer to it");
+  d.param("rings-dp", rings_dp, "particle spacing of the rings sweep").positive();
+  d.param("slab-dp", slab_dp, "particle spacing of the slab sweep").positive();
+  d.param("rings-time", rings_time, "simulated time of each rings sweep run").positive();
+  d.param("slab-time", slab_time, "simulated time of each slab sweep run").positive();
+  d.param("cfl-values", cfls, "time-step factors of the sweep").positive();
+  d.param("fast-dp", fast_dp, "particle spacing of the fast collision").positive();
+  d.param("fast-speed", fast_speed, "speed of each ring in the fast collision (paper: 0.059)").positive();
+  d.param("cfl", cfl, "the factor of the scene drivers: the margins and the halved-step runs refer to it").positive();
   int slab_seeds = 8;
   double slab_jitter = 1e-8;
-  d.param("slab-seeds", slab_seeds, "members of the slab's parting-time ensemble at each of the two factors");
-  d.param("slab-jitter", slab_jitter, "largest random displacement of the ensemble's particles, in dp (SlabSpec::jitter)");
+  d.param("slab-seeds", slab_seeds, "members of the slab's parting-time ensemble at each of the two factors").positive();
+  d.param("slab-jitter", slab_jitter, "largest random displacement of the ensemble's particles, in dp (SlabSpec::jitter)").non_negative();
 
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("fast-dp")) fast_dp = 0.2;

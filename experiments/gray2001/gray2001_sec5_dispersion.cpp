@@ -42,11 +42,11 @@ int main(int argc, char** argv) {
   int n = 4;
   double h_min = 0.8, h_max = 2.5, h_step = 0.005;
   int n_max = 10;
-  d.param("n", n, "artificial-stress exponent n of f^n (eq 3.12)");
-  d.param("h-min", h_min, "smallest h/dp of the sweep");
-  d.param("h-max", h_max, "largest h/dp of the sweep");
-  d.param("h-step", h_step, "h/dp step of the sweep (CHOSEN: fine enough to locate sign changes to 1e-3)");
-  d.param("n-max", n_max, "largest n of the f_xx(n) table");
+  d.param("n", n, "artificial-stress exponent n of f^n (eq 3.12)").non_negative();
+  d.param("h-min", h_min, "smallest h/dp of the sweep").positive();
+  d.param("h-max", h_max, "largest h/dp of the sweep").positive();
+  d.param("h-step", h_step, "h/dp step of the sweep (CHOSEN: fine enough to locate sign changes to 1e-3)").positive();
+  d.param("n-max", n_max, "largest n of the f_xx(n) table").positive();
 
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("h-step")) h_step = 0.05;

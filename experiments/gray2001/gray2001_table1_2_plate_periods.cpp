@@ -59,21 +59,21 @@ int main(int argc, char** argv) {
   int table = 0;
   long max_steps = -1;
   int crossings = 1;
-  d.param("crossings", crossings, "stop each run at this zero crossing of the tip (2: one period; 1: half, T = 2 t_1)");
-  d.param("dp", dp, "particle spacing (H/dp must be an integer)");
-  d.param("clamp-length", clamp, "plate length held between the fixed layers");
-  d.param("cfl", scheme.cfl, "time-step factor: dt = cfl h / (c_L + V_f)");
-  d.param("alpha", scheme.alpha, "artificial viscosity alpha");
-  d.param("beta", scheme.beta, "artificial viscosity beta");
-  d.param("periods", periods, "longest run in theoretical periods (each run stops at its second zero crossing)");
-  d.param("table", table, "1 or 2 for one table only, 0 for both");
-  d.param("paper-dp", paper_dp, "the spacing of the paper's runs, used only by the theory reading H - dp");
+  d.param("crossings", crossings, "stop each run at this zero crossing of the tip (2: one period; 1: half, T = 2 t_1)").positive();
+  d.param("dp", dp, "particle spacing (H/dp must be an integer)").positive();
+  d.param("clamp-length", clamp, "plate length held between the fixed layers").non_negative();
+  d.param("cfl", scheme.cfl, "time-step factor: dt = cfl h / (c_L + V_f)").positive();
+  d.param("alpha", scheme.alpha, "artificial viscosity alpha").non_negative();
+  d.param("beta", scheme.beta, "artificial viscosity beta").non_negative();
+  d.param("periods", periods, "longest run in theoretical periods (each run stops at its second zero crossing)").positive();
+  d.param("table", table, "1 or 2 for one table only, 0 for both").at_least(0).at_most(2);
+  d.param("paper-dp", paper_dp, "the spacing of the paper's runs, used only by the theory reading H - dp").positive();
   d.param("max-steps", max_steps, "stop each run after this many steps (smoke test); -1 = no limit");
-  std::vector<std::string> only;
-  d.param("rows", only, "run only these rows, e.g. H2_Vf0.05_mu0.6 (default: every row of the table)");
+  std::vector<std::string> only, row_names;
+  for (const Row& r : kRows) row_names.push_back(key(r));
+  d.param("rows", only, "run only these rows, e.g. H2_Vf0.05_mu0.6 (default: every row of the table)").one_of(row_names);
 
   return d.run(argc, argv, [&] {
-    if (table < 0 || table > 2) throw std::invalid_argument("--table must be 0, 1 or 2");
     d.retarget(table == 2 ? "G-tab2" : "G-tab1");
     if (d.quick() && !d.given("dp")) dp = 0.25;
     const double K = 1.0;  // rho0 c0^2

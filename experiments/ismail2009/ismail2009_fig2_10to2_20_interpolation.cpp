@@ -151,16 +151,18 @@ int main(int argc, char** argv) {
   std::vector<double> edge_widths = {40, 12, 3, 0};            // CHOSEN, in particle spacings
   int sweep_max_width = 12;                                     // CHOSEN: up to the "low gradient" edge
   double fairly_good_factor = 2.0;  // CHOSEN: "fairly good" = error within this factor of the best cover
-  d.param("kernel", kernel_name, "cover function (modified_mollifier, mollifier, lucy, cubic_spline, gaussian)");
-  d.param("normalisation", normalisation, "integral (eq 2.19) or discrete (sum W dV = 1 in the interior)");
-  d.param("covers", covers, "cover sizes (support radius) in particle spacings");
-  d.param("quartic-ps-fine", quartic_ps_fine, "particle spacing, (x-0.5)^4, Figs 2.10, 2.11");
-  d.param("quartic-ps-coarse", quartic_ps_coarse, "particle spacing, (x-0.5)^4, Fig 2.12");
-  d.param("sin-spacings-fine", sin_spacings_fine, "spacings in the domain, Figs 2.13 (0,3pi) and 2.15 (0,pi)");
-  d.param("sin-spacings-coarse", sin_spacings_coarse, "spacings in the domain, Figs 2.14 (0,3pi) and 2.16 (0,pi)");
-  d.param("edge-ps", edge_ps, "particle spacing of the falling edges on (0, 1), Figs 2.17-2.20");
-  d.param("edge-widths", edge_widths, "edge widths in spacings for Figs 2.17, 2.18, 2.19, 2.20");
-  d.param("sweep-max-width", sweep_max_width, "edge widths 0..this (spacings) in edge_width_sweep.csv");
+  d.param("kernel", kernel_name, "cover function (modified_mollifier, mollifier, lucy, cubic_spline, gaussian)")
+      .one_of({"modified_mollifier", "mollifier", "lucy", "cubic_spline", "gaussian"});
+  d.param("normalisation", normalisation, "integral (eq 2.19) or discrete (sum W dV = 1 in the interior)")
+      .one_of({"integral", "discrete"});
+  d.param("covers", covers, "cover sizes (support radius) in particle spacings").positive();
+  d.param("quartic-ps-fine", quartic_ps_fine, "particle spacing, (x-0.5)^4, Figs 2.10, 2.11").positive();
+  d.param("quartic-ps-coarse", quartic_ps_coarse, "particle spacing, (x-0.5)^4, Fig 2.12").positive();
+  d.param("sin-spacings-fine", sin_spacings_fine, "spacings in the domain, Figs 2.13 (0,3pi) and 2.15 (0,pi)").positive();
+  d.param("sin-spacings-coarse", sin_spacings_coarse, "spacings in the domain, Figs 2.14 (0,3pi) and 2.16 (0,pi)").positive();
+  d.param("edge-ps", edge_ps, "particle spacing of the falling edges on (0, 1), Figs 2.17-2.20").positive();
+  d.param("edge-widths", edge_widths, "edge widths in spacings for Figs 2.17, 2.18, 2.19, 2.20").non_negative();
+  d.param("sweep-max-width", sweep_max_width, "edge widths 0..this (spacings) in edge_width_sweep.csv").positive();
   d.param("fairly-good-factor", fairly_good_factor, "error ratio to the panel's best cover counted as fairly good");
 
   return d.run(argc, argv, [&] {

@@ -109,11 +109,11 @@ int main(int argc, char** argv) {
                 "normalisation in 1D/2D/3D, printed constants G, share of the support with W'' > 0");
   int samples = 2001, panels = 64, gl_order = 16, scan = 4000;
   double h = 0.7;
-  d.param("samples", samples, "points per curve across [-support, support] (plots only)");
-  d.param("h", h, "smoothing length of the normalisation integrals (CHOSEN non-unit to test the 1/h^d scaling)");
-  d.param("panels", panels, "panels per smooth piece of the independent Gauss-Legendre quadrature");
-  d.param("gl-order", gl_order, "Gauss-Legendre points per panel");
-  d.param("scan", scan, "scan steps over the support before bisecting each sign change of W''");
+  d.param("samples", samples, "points per curve across [-support, support] (plots only)").positive();
+  d.param("h", h, "smoothing length of the normalisation integrals (CHOSEN non-unit to test the 1/h^d scaling)").positive();
+  d.param("panels", panels, "panels per smooth piece of the independent Gauss-Legendre quadrature").positive();
+  d.param("gl-order", gl_order, "Gauss-Legendre points per panel").positive();
+  d.param("scan", scan, "scan steps over the support before bisecting each sign change of W''").positive();
 
   return d.run(argc, argv, [&] {
     if (d.quick()) {

@@ -23,14 +23,14 @@ int main(int argc, char** argv) {
   double rho = 8000, E = 200e9, nu = 0.3, L = 0.15, p0 = 1e5, ps = 0.15e-3, h_over_ps = 5.5, pulse = 5e-6,
          smooth = 0.5e-6, t_end = 60e-6;
   std::vector<double> factors{0.5, 2.0, 1e4, 0.01};
-  d.param("rho", rho, "density of the left half, kg/m^3");
+  d.param("rho", rho, "density of the left half, kg/m^3").positive();
   d.param("E", E, "Young's modulus, Pa");
-  d.param("nu", nu, "Poisson's ratio");
-  d.param("ps", ps, "particle spacing, m (CHOSEN as I-bar)");
-  d.param("h-over-ps", h_over_ps, "cover radius in spacings");
-  d.param("pulse", pulse, "pulse duration, s (CHOSEN)");
-  d.param("smoothing", smooth, "pulse smoothing, s (CHOSEN: intermediate)");
-  d.param("factors", factors, "rho_B / rho_A for Figs 4.16-4.19 (CHOSEN)");
+  d.param("nu", nu, "Poisson's ratio").above(-1).below(0.5);
+  d.param("ps", ps, "particle spacing, m (CHOSEN as I-bar)").positive();
+  d.param("h-over-ps", h_over_ps, "cover radius in spacings").positive();
+  d.param("pulse", pulse, "pulse duration, s (CHOSEN)").positive();
+  d.param("smoothing", smooth, "pulse smoothing, s (CHOSEN: intermediate)").non_negative();
+  d.param("factors", factors, "rho_B / rho_A for Figs 4.16-4.19 (CHOSEN)").positive();
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("ps")) ps = 0.3e-3;
     if (factors.size() != 4) throw std::invalid_argument("--factors needs four values (Figs 4.16-4.19)");

@@ -33,16 +33,16 @@ int main(int argc, char** argv) {
   double rho = 8000, E = 200e9, nu = 0.3, L = 0.15, eps0 = 0.002, perturb = 0.05, t_perturb = 2e-6, dt_factor = 0.25;
   int particles = 201;
   double h_over_ps = 5.5;
-  d.param("rho", rho, "density, kg/m^3");
+  d.param("rho", rho, "density, kg/m^3").positive();
   d.param("E", E, "Young's modulus, Pa");
-  d.param("nu", nu, "Poisson's ratio");
-  d.param("length", L, "bar length, m");
-  d.param("particles", particles, "real particles (CHOSEN)");
-  d.param("h-over-ps", h_over_ps, "cover radius in spacings");
-  d.param("eps0", eps0, "pre-strain (CHOSEN)");
-  d.param("perturbation", perturb, "relative change of the centre particle's displacement (Section 4.7.3: 5%)");
-  d.param("t-perturb", t_perturb, "time of the perturbation, s (CHOSEN)");
-  d.param("dt-factor", dt_factor, "dt / (h/c) (CHOSEN)");
+  d.param("nu", nu, "Poisson's ratio").above(-1).below(0.5);
+  d.param("length", L, "bar length, m").positive();
+  d.param("particles", particles, "real particles (CHOSEN)").positive();
+  d.param("h-over-ps", h_over_ps, "cover radius in spacings").positive();
+  d.param("eps0", eps0, "pre-strain (CHOSEN)").non_negative();
+  d.param("perturbation", perturb, "relative change of the centre particle's displacement (Section 4.7.3: 5%)").non_negative();
+  d.param("t-perturb", t_perturb, "time of the perturbation, s (CHOSEN)").non_negative();
+  d.param("dt-factor", dt_factor, "dt / (h/c) (CHOSEN)").positive();
   return d.run(argc, argv, [&] {
     if (particles < 21 || particles % 2 == 0) throw std::invalid_argument("--particles must be odd and >= 21");
     const double ps = L / (particles - 1), C = sph::p_wave_modulus(sph::lame_from_young_poisson(E, nu));

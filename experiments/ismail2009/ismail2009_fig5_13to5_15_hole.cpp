@@ -27,17 +27,17 @@
 int main(int argc, char** argv) {
   sph::Driver d("ismail2009_fig5_13to5_15_hole", "I-hole", "quarter sheet with a hole: stress concentration at 21 x 21");
   scenes::HoleParams p;
-  d.param("n", p.n, "particles along a side (Section 5.4.4: 21)");
+  d.param("n", p.n, "particles along a side (Section 5.4.4: 21)").positive();
   d.param("a", p.a, "quarter side, m (CHOSEN)");
   d.param("R", p.R, "hole radius, m (CHOSEN)");
   d.param("E", p.E, "Young's modulus, Pa (Fig 5.13)");
-  d.param("nu", p.nu, "Poisson's ratio (Fig 5.13)");
-  d.param("rho", p.rho, "density, kg/m^3 (CHOSEN)");
+  d.param("nu", p.nu, "Poisson's ratio (Fig 5.13)").above(-1).below(0.5);
+  d.param("rho", p.rho, "density, kg/m^3 (CHOSEN)").positive();
   d.param("traction", p.traction, "applied traction, Pa (Section 5.4.4)");
-  d.param("h-over-ps", p.h_over_ps, "cover radius in spacings (CHOSEN)");
-  d.param("settle", p.settle, "settling time after the ramp in 1/omega (CHOSEN)");
-  d.param("damping", p.damping, "mass-proportional damping in units of omega (CHOSEN)");
-  d.param("hourglass", p.hourglass, "zero-energy-mode control gamma (TlConfig2D::hourglass)");
+  d.param("h-over-ps", p.h_over_ps, "cover radius in spacings (CHOSEN)").positive();
+  d.param("settle", p.settle, "settling time after the ramp in 1/omega (CHOSEN)").non_negative();
+  d.param("damping", p.damping, "mass-proportional damping in units of omega (CHOSEN)").non_negative();
+  d.param("hourglass", p.hourglass, "zero-energy-mode control gamma (TlConfig2D::hourglass)").non_negative();
   d.param("variational", p.variational, "boundary scheme: variational (true) or ghost reflection (false)");
   return d.run(argc, argv, [&] {
     auto f = d.csv("fields.csv", {"t", "X", "Y", "ux", "uy", "sigma1", "T11", "T22", "T12"});

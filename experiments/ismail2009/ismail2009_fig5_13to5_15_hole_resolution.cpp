@@ -74,15 +74,15 @@ int main(int argc, char** argv) {
   p.variational = false;
   p.settle = 6;
   p.hourglass = 0.005;
-  d.param("n", ns, "particles along a side of the controlled runs, one run each");
-  d.param("plain-n", plain_ns, "particles along a side of the runs without the control");
-  d.param("gammas", gammas, "control strengths of the gamma sweep");
-  d.param("gamma-n", gamma_n, "particles along a side of the gamma sweep");
-  d.param("linear-n", linear_n, "particles along a side of the linear (Hooke) run; 0 = none");
-  d.param("fem-m", fem_m, "finite element meshes of the linear reference: 2m x m elements (m along the radius)");
-  d.param("hourglass", p.hourglass, "zero-energy-mode control gamma of the study (TlConfig2D::hourglass; CHOSEN)");
-  d.param("settle", p.settle, "settling time after the ramp in 1/omega (CHOSEN)");
-  d.param("damping", p.damping, "mass-proportional damping in units of omega (CHOSEN)");
+  d.param("n", ns, "particles along a side of the controlled runs, one run each").positive();
+  d.param("plain-n", plain_ns, "particles along a side of the runs without the control").positive();
+  d.param("gammas", gammas, "control strengths of the gamma sweep").non_negative();
+  d.param("gamma-n", gamma_n, "particles along a side of the gamma sweep").positive();
+  d.param("linear-n", linear_n, "particles along a side of the linear (Hooke) run; 0 = none").non_negative();
+  d.param("fem-m", fem_m, "finite element meshes of the linear reference: 2m x m elements (m along the radius)").positive();
+  d.param("hourglass", p.hourglass, "zero-energy-mode control gamma of the study (TlConfig2D::hourglass; CHOSEN)").non_negative();
+  d.param("settle", p.settle, "settling time after the ramp in 1/omega (CHOSEN)").non_negative();
+  d.param("damping", p.damping, "mass-proportional damping in units of omega (CHOSEN)").non_negative();
   d.param("variational", p.variational, "boundary scheme: variational (true) or ghost reflection (false)");
   return d.run(argc, argv, [&] {
     if (d.quick()) {

@@ -105,14 +105,14 @@ int main(int argc, char** argv) {
   double path_l2_end = 2.0;                  // Section 5.4.3: l2 reaches 2 when l1 reaches l1_max
   double fd_step = 1e-5;                     // central-difference step for the small-strain slope
   d.param("E", E, "Young's modulus [GPa]");
-  d.param("rho", rho, "density [kg/m^3], for the wave speed only");
-  d.param("nu", nus, "Poisson's ratios, one panel each");
+  d.param("rho", rho, "density [kg/m^3], for the wave speed only").positive();
+  d.param("nu", nus, "Poisson's ratios, one panel each").above(-1).below(0.5);
   d.param("l2", l2s, "fixed transverse stretches, one curve each");
-  d.param("l1-min", l1_min, "smallest stretch l1");
-  d.param("l1-max", l1_max, "largest stretch l1");
-  d.param("n", n, "grid points in l1");
-  d.param("path-l2-end", path_l2_end, "l2 at l1 = l1-max on the linear path of Fig 5.12");
-  d.param("fd-step", fd_step, "central-difference step in l1 for dT11/dl1 at l1 = 1");
+  d.param("l1-min", l1_min, "smallest stretch l1").positive();
+  d.param("l1-max", l1_max, "largest stretch l1").positive();
+  d.param("n", n, "grid points in l1").positive();
+  d.param("path-l2-end", path_l2_end, "l2 at l1 = l1-max on the linear path of Fig 5.12").positive();
+  d.param("fd-step", fd_step, "central-difference step in l1 for dT11/dl1 at l1 = 1").positive();
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("n")) n = 551;
     if (!(l1_min > 0 && l1_min < 1 && l1_max > 1)) throw std::invalid_argument("need 0 < l1-min < 1 < l1-max");

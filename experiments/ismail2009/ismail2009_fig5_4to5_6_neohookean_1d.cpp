@@ -38,15 +38,15 @@ int main(int argc, char** argv) {
   sph::Driver d("ismail2009_fig5_4to5_6_neohookean_1d", "I-nh1d", "1D neo-Hookean bar: wave and large stretch");
   double rho = 8000, E = 200e9, L = 0.015, stretch = 6.0, transits = 30, h_over_ps = 5.5, dt_factor = 0.5, tol = 0.25;
   int particles = 151;
-  d.param("rho", rho, "density, kg/m^3 (Section 5.3.1)");
+  d.param("rho", rho, "density, kg/m^3 (Section 5.3.1)").positive();
   d.param("E", E, "Young's modulus, Pa (Section 5.3.1)");
-  d.param("length", L, "bar length for the stretch test, m (Section 5.3.2: 15 mm)");
-  d.param("stretch", stretch, "final stretch (90 mm / 15 mm)");
-  d.param("transits", transits, "loading time in small-strain transit times L/c_L (Section 5.3.2: 30)");
-  d.param("particles", particles, "particles on the stretched bar (CHOSEN)");
-  d.param("h-over-ps", h_over_ps, "cover radius in spacings");
-  d.param("dt-factor", dt_factor, "dt / (h/c_L) (CHOSEN)");
-  d.param("loss-tolerance", tol, "loss of stability: max |F_p+1 - F_p| / l above this (CHOSEN)");
+  d.param("length", L, "bar length for the stretch test, m (Section 5.3.2: 15 mm)").positive();
+  d.param("stretch", stretch, "final stretch (90 mm / 15 mm)").positive();
+  d.param("transits", transits, "loading time in small-strain transit times L/c_L (Section 5.3.2: 30)").positive();
+  d.param("particles", particles, "particles on the stretched bar (CHOSEN)").positive();
+  d.param("h-over-ps", h_over_ps, "cover radius in spacings").positive();
+  d.param("dt-factor", dt_factor, "dt / (h/c_L) (CHOSEN)").positive();
+  d.param("loss-tolerance", tol, "loss of stability: max |F_p+1 - F_p| / l above this (CHOSEN)").non_negative();
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("particles")) particles = 61;
 

@@ -37,15 +37,15 @@ int main(int argc, char** argv) {
   double rho = 8000, E = 200e9, nu = 0.3, L = 0.15, ps_wave = 0.5e-3, ps_block = 0.5e-3, h_over_ps = 3.5, p0 = 1e5,
          pulse = 5e-6, smooth = 0.5e-6, transits = 30, stretch = 6;
   int rows = 6, block_nx = 31;
-  d.param("rho", rho, "density, kg/m^3");
+  d.param("rho", rho, "density, kg/m^3").positive();
   d.param("E", E, "Young's modulus, Pa");
-  d.param("nu", nu, "Poisson's ratio");
-  d.param("ps-wave", ps_wave, "spacing of the wave bar, m (CHOSEN)");
+  d.param("nu", nu, "Poisson's ratio").above(-1).below(0.5);
+  d.param("ps-wave", ps_wave, "spacing of the wave bar, m (CHOSEN)").positive();
   d.param("rows", rows, "particles across the thickness (Section 5.4.2: six)");
-  d.param("ps-block", ps_block, "spacing of the 31 x 6 block, m (CHOSEN)");
-  d.param("block-nx", block_nx, "particles along the block (Section 5.4.3: 31)");
-  d.param("h-over-ps", h_over_ps, "cover radius in spacings (CHOSEN)");
-  d.param("transits", transits, "loading time in transit times (CHOSEN as Section 5.3.2)");
+  d.param("ps-block", ps_block, "spacing of the 31 x 6 block, m (CHOSEN)").positive();
+  d.param("block-nx", block_nx, "particles along the block (Section 5.4.3: 31)").positive();
+  d.param("h-over-ps", h_over_ps, "cover radius in spacings (CHOSEN)").positive();
+  d.param("transits", transits, "loading time in transit times (CHOSEN as Section 5.3.2)").positive();
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("ps-wave")) ps_wave = 1.5e-3;
     const sph::Lame m = sph::lame_from_young_poisson(E, nu);

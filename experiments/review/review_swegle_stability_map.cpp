@@ -53,13 +53,13 @@ int main(int argc, char** argv) {
   int samples = 2001, scan = 4000, chain = 64;
   double delta = 1e-6, sigma = 1.0;
   std::vector<double> gray_h{1.0, 1.5}, ismail_h{1.5, 5.5};
-  d.param("samples", samples, "points of each map over the support (plot)");
-  d.param("scan", scan, "scan steps before bisecting the inflection of W''");
-  d.param("delta", delta, "finite-difference displacement (units of dp) of the linearisation");
+  d.param("samples", samples, "points of each map over the support (plot)").positive();
+  d.param("scan", scan, "scan steps before bisecting the inflection of W''").positive();
+  d.param("delta", delta, "finite-difference displacement (units of dp) of the linearisation").positive();
   d.param("sigma", sigma, "magnitude of the uniform stress (units of rho c^2; only the sign matters)");
-  d.param("chain", chain, "particles of the periodic chain for the alternating-mode check (even)");
-  d.param("gray-h-over-dp", gray_h, "h/dp marked for the cubic spline (Gray et al. 2001: 1 and 1.5)").expected(1, 20);
-  d.param("ismail-h-over-dp", ismail_h, "h/dp marked for the support-1 functions (Ismail 2009: 1.5 and 5.5)").expected(1, 20);
+  d.param("chain", chain, "particles of the periodic chain for the alternating-mode check (even)").positive();
+  d.param("gray-h-over-dp", gray_h, "h/dp marked for the cubic spline (Gray et al. 2001: 1 and 1.5)").expected(1, 20).positive();
+  d.param("ismail-h-over-dp", ismail_h, "h/dp marked for the support-1 functions (Ismail 2009: 1.5 and 5.5)").expected(1, 20).positive();
 
   return d.run(argc, argv, [&] {
     if (d.quick()) {

@@ -1,6 +1,9 @@
 #include "core/lattices.hpp"
 
+#include <unistd.h>
+
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace sph {
@@ -35,9 +38,20 @@ static double row_shift(LatticeKind kind, long row, double dp) {
 // Finite and positive (false for NaN and infinity, which would make the generators loop or overflow).
 static bool finite_positive(double v) { return std::isfinite(v) && v > 0; }
 
+void check_particle_count(double count, double spacing, const char* shape) {
+  constexpr double kBytesPerParticle = 1024.0;  // a lower bound (see the header)
+  const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  if (std::isfinite(count) && (memory <= 0 || count * kBytesPerParticle <= memory)) return;
+  std::ostringstream m;
+  m << shape << " at spacing " << spacing << ": " << count << " particles, which need more than " << count * kBytesPerParticle
+    << " bytes (1 KiB each), more than this machine's " << memory << " bytes of memory: use a coarser spacing";
+  throw std::invalid_argument(m.str());
+}
+
 std::vector<Vec2> lattice_block(LatticeKind kind, int nx, int ny, double dp, Vec2 origin) {
   if (nx < 0 || ny < 0 || !finite_positive(dp) || !origin.allFinite())
     throw std::invalid_argument("lattice_block: need nx, ny >= 0, finite dp > 0 and a finite origin");
+  check_particle_count(static_cast<double>(nx) * ny, dp, "lattice_block");
   std::vector<Vec2> pts;
   pts.reserve(static_cast<size_t>(nx) * ny);
   const double dy = row_spacing(kind, dp);
@@ -50,6 +64,7 @@ std::vector<Vec2> lattice_block(LatticeKind kind, int nx, int ny, double dp, Vec
 std::vector<Vec2> rectangle(LatticeKind kind, double x0, double y0, double Lx, double Ly, double dp) {
   if (!finite_positive(dp) || !finite_positive(Lx) || !finite_positive(Ly) || !std::isfinite(x0) || !std::isfinite(y0))
     throw std::invalid_argument("rectangle: need finite dp, Lx, Ly > 0 and a finite corner");
+  check_particle_count(Lx * Ly / area_per_particle(kind, dp), dp, "rectangle");
   const double dy = row_spacing(kind, dp);
   const int ny = static_cast<int>(std::floor(Ly / dy + 1e-9));
   std::vector<Vec2> pts;
@@ -70,6 +85,7 @@ std::vector<Vec2> rectangle(LatticeKind kind, double x0, double y0, double Lx, d
 std::vector<Vec2> ring(LatticeKind kind, Vec2 centre, double r_inner, double r_outer, double dp) {
   if (!finite_positive(dp) || !(r_outer > r_inner) || !(r_inner >= 0) || !std::isfinite(r_outer) || !centre.allFinite())
     throw std::invalid_argument("ring: need 0 <= r_inner < r_outer finite, finite dp > 0 and centre");
+  check_particle_count(4.0 * r_outer * r_outer / area_per_particle(kind, dp), dp, "ring");  // the square scanned
   const double dy = row_spacing(kind, dp);
   const long nj = static_cast<long>(std::ceil(r_outer / dy)) + 1;
   const long ni = static_cast<long>(std::ceil(r_outer / dp)) + 1;
@@ -85,6 +101,7 @@ std::vector<Vec2> ring(LatticeKind kind, Vec2 centre, double r_inner, double r_o
 
 std::vector<Vec2> hexagon(int shells, double dp, Vec2 centre) {
   if (shells < 0 || !finite_positive(dp)) throw std::invalid_argument("hexagon: need shells >= 0, dp > 0");
+  check_particle_count(3.0 * shells * (shells + 1.0) + 1.0, dp, "hexagon");
   // Axial coordinates (a, b) with |a|, |b|, |a + b| <= shells on the basis e1 = (1, 0),
   // e2 = (1/2, sqrt(3)/2).
   std::vector<Vec2> pts;

@@ -21,6 +21,13 @@ double row_spacing(LatticeKind kind, double dp);
 /// Area per particle: dp^2, or dp^2 sqrt(3)/2 for the triangular lattice.
 double area_per_particle(LatticeKind kind, double dp);
 
+/// Refuses, before anything is allocated, a particle set that cannot fit in this machine's memory: `count`
+/// particles (estimated by the generator from its extent and spacing) at a lower bound of 1 KiB per particle
+/// (a particle's fields, its rates and its ~14-28 neighbour pairs in every formulation here take more), more
+/// than the physical memory. Throws std::invalid_argument naming the shape, the spacing and the count. Every
+/// generator below calls it, so a resolution typed wrong (dp = 1e-9) stops at once with that message.
+void check_particle_count(double count, double spacing, const char* shape);
+
 /// nx x ny block of a lattice with its first point at `origin`; rows with odd index are shifted by dp/2
 /// for the face-centred and triangular kinds.
 std::vector<Vec2> lattice_block(LatticeKind kind, int nx, int ny, double dp, Vec2 origin = Vec2::Zero());

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <string>
 
+#include "core/lattices.hpp"
+
 namespace sph {
 
 ParticleLine uniform_line(double a, double b, double ps, double ghost_width) {
   if (!(ps > 0.0) || !(b > a)) throw std::invalid_argument("uniform_line: need b > a and ps > 0");
   if (ghost_width < 0.0) throw std::invalid_argument("uniform_line: ghost_width must be >= 0");
   const double spans = (b - a) / ps;
+  check_particle_count(spans, ps, "uniform_line");
   const long n = std::lround(spans);
   if (n < 1 || std::abs(spans - n) > 1e-9 * std::max(1.0, spans))
     throw std::invalid_argument("uniform_line: (b - a) / ps = " + std::to_string(spans) + " is not an integer");

@@ -9,6 +9,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "core/lattices.hpp"
 #include "core/materials.hpp"
 
 namespace scenes {
@@ -60,6 +61,7 @@ Plate make_plate(const PlateSpec& s, const sph::GrayParameters& scheme) {
   Plate p;
   const double rho0 = scheme.rho0, c0 = scheme.c0, m = rho0 * s.dp * s.dp;
   const double x0 = -s.clamp_length;
+  sph::check_particle_count((s.L + s.clamp_length) / s.dp * nrows, s.dp, "plate");
   const int nx = static_cast<int>(std::lround((s.L + s.clamp_length) / s.dp));
   const int ny = static_cast<int>(std::lround(nrows));
   double best = std::numeric_limits<double>::max();

@@ -8,6 +8,7 @@
 
 #include "core/diagnostics.hpp"
 #include "core/fragments.hpp"
+#include "core/lattices.hpp"
 #include "core/run_loop.hpp"
 #include "frame/progress.hpp"
 
@@ -28,6 +29,7 @@ sph::GrayOptions slab_options() {
 Slab make_slab(const SlabSpec& s, double rho0) {
   if (!(s.dp > 0) || !(s.L > 0) || !(s.H > 0) || !(s.band > 0) || s.end_accel < 0 || !(s.margin > 0))
     throw std::invalid_argument("slab: need dp, L, H, band, margin > 0 and end acceleration >= 0");
+  sph::check_particle_count((s.L / s.dp) * (s.H / s.dp), s.dp, "slab");
   const long nx = std::lround(s.L / s.dp), ny = std::lround(s.H / s.dp);
   Slab slab;
   slab.nx = nx;

@@ -208,10 +208,10 @@ SpamOptions spam_options_from_label(const std::string& label) {
 namespace sph::scenes {
 
 void hexagon_params(Driver& d, HexagonSetup& s) {
-  d.param("shells", s.shells, "hexagon shells n (N = 1 + 3n + 3n^2)");
-  d.param("dt", s.dt, "RK4 time step");
-  d.param("vmax", s.vmax, "rotation speed at the vertices");
-  d.param("revolutions", s.revolutions, "nominal revolutions to follow");
+  d.param("shells", s.shells, "hexagon shells n (N = 1 + 3n + 3n^2)").positive();
+  d.param("dt", s.dt, "RK4 time step").positive();
+  d.param("vmax", s.vmax, "rotation speed at the vertices").positive();
+  d.param("revolutions", s.revolutions, "nominal revolutions to follow").positive();
 }
 
 void quick_hexagon(const Driver& d, HexagonSetup& s) {

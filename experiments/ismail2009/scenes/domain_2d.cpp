@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/kernels.hpp"
+#include "core/lattices.hpp"
 #include "core/neighbours.hpp"
 
 namespace scenes {
@@ -74,6 +75,7 @@ sph::TlConfig2D make_body(const Domain2D& dom, std::vector<sph::BoundaryConditio
   cfg.ps = ps;
   cfg.h_over_ps = h_over_ps;
   const double radius = h_over_ps * ps * sph::ModifiedMollifierShape::support;
+  sph::check_particle_count((dom.hi.x() - dom.lo.x()) * (dom.hi.y() - dom.lo.y()) / (ps * ps), ps, "make_body");
   const int g = static_cast<int>(std::ceil(radius / ps));
   const int i0 = static_cast<int>(std::floor(dom.lo.x() / ps + 1e-9)) - g, i1 = static_cast<int>(std::ceil(dom.hi.x() / ps - 1e-9)) + g;
   const int j0 = static_cast<int>(std::floor(dom.lo.y() / ps + 1e-9)) - g, j1 = static_cast<int>(std::ceil(dom.hi.y() / ps - 1e-9)) + g;
