@@ -2,7 +2,8 @@
 #   make figures   deps -> build -> every driver -> plots -> check against published numbers
 #   make test      declaration check -> deps -> build -> GoogleTest (ctest) -> quick smoke run of every driver
 #                  -> quick check -> the report on the quick results
-# Other targets: make check, make paper, make bench, make bench-peer, make deps, make clean, make check-targets, make list-targets.
+# Other targets: make check, make paper, make bench, make bench-peer, make sanitize, make deps, make clean, make check-targets,
+# make list-targets.
 # Make's dependency graph reruns a driver only when its binary changed. Threads: `figures` and `quick` run
 # NCORES drivers at a time, each single-threaded (OpenMP teams of two on 2 cores reach 1.3-1.8x, two
 # single-threaded drivers side by side ~2x; oversubscribed teams spin and run many times slower), the longest
@@ -32,12 +33,12 @@ ORDERED = $(filter $(TARGETS),$(LONGEST_FIRST)) $(filter-out $(LONGEST_FIRST),$(
 DONE    = $(foreach t,$(ORDERED),$(RESULTS)/$(t)/.done)
 FIGS    = $(foreach t,$(ORDERED),$(FIGURES)/$(t).png)
 
-.PHONY: all figures test check paper bench bench-peer deps build build-drivers configure ctest results plots quick clean help timings \
+.PHONY: all figures test sanitize check paper bench bench-peer deps build build-drivers configure ctest results plots quick clean help timings \
         check-targets list-targets
 .DEFAULT_GOAL := help
 
 help:
-	@sed -n '1,5p' Makefile | sed 's/^# \{0,1\}//'
+	@sed -n '1,6p' Makefile | sed 's/^# \{0,1\}//'
 
 # ---------------------------------------------------------------------------------------------------
 # The targets are declared once, in experiments/targets.mk. `make -s list-targets` prints Make's reading of
@@ -126,6 +127,18 @@ quick:
 	  --out results/quick/report/index.html
 
 test: deps check-targets build ctest quick
+
+# The library, the unit tests and the drivers built with AddressSanitizer and UndefinedBehaviorSanitizer
+# (build-sanitize/, -O1): ctest and every driver's quick run under them; any report fails the make. Not part of
+# `make test` (it costs ~3x a quick pipeline; the README gives the measured time).
+SAN_BUILD := build-sanitize
+sanitize: deps
+	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O1 -DSPH_SANITIZE=ON
+	cmake --build $(SAN_BUILD) -j $(JOBS)
+	cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 OMP_NUM_THREADS=1 \
+	  $(MAKE) --no-print-directory -j $(NCORES) BUILD=$(SAN_BUILD) RESULTS=results/sanitize DRIVER_FLAGS=--quick results
+	@echo "make sanitize: ctest and every driver's quick run clean under ASan + UBSan"
 
 # Benchmarks: Google Benchmark micro-benchmarks (results/bench/micro.json) and every scene benchmark in
 # BENCH_DRIVERS (experiments/targets.mk), each writing results/bench/<name>.csv with the columns

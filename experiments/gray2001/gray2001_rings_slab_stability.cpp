@@ -43,6 +43,9 @@ int main(int argc, char** argv) {
     if (d.quick() && !d.given("fast-dp")) fast_dp = 0.2;
     if (d.quick() && !d.given("slab-time")) slab_time = 60;
     if (d.quick() && !d.given("rings-time")) rings_time = 40;
+    // Every scene's size before the first run: a spacing typed wrong stops here, not after the other scenes.
+    for (const double dp : {rings_dp, fast_dp}) { scenes::RingsSpec r; r.dp = dp; scenes::check_size(r); }
+    { scenes::SlabSpec s; s.dp = slab_dp; scenes::check_size(s); }
     auto sweep = d.csv("cfl_sweep.csv", {"scene", "eps", "cfl", "dt", "steps", "t_reached", "blew_up", "broke", "failed", "message"});
     for (const double eps : {0.0, 0.3}) {
       const std::string e = eps > 0 ? "eps0.3" : "eps0";

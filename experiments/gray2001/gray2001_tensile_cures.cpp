@@ -59,6 +59,10 @@ int main(int argc, char** argv) {
     if (d.quick() && !d.given("rings-dp")) rings_dp = 0.25;
     if (d.quick() && !d.given("slab-dp")) slab_dp = 0.1;
     if (d.quick() && !d.given("slab-t-max")) slab_t_max = 300;
+    // Every scene's size before the first run: a spacing typed wrong stops here, not after the other scenes.
+    { scenes::RingsSpec r; r.dp = rings_dp; scenes::check_size(r); }
+    { scenes::PlateSpec p; p.H = 2.0; p.dp = plate_dp; p.clamp_length = 2.0; scenes::check_size(p); }
+    { scenes::SlabSpec s; s.dp = slab_dp; scenes::check_size(s); }
     const double mu_plate = 0.6;
     const double T_theory = scenes::plate_theory_period(mu_plate, 2.0, 20.0);
     auto table = d.csv("cures.csv", {"variant", "artificial_stress", "xsph", "plate_period", "plate_period_error", "plate_broken",

@@ -49,6 +49,10 @@ double plate_theory_period(double mu, double H, double L) {
   return plate_theory_period(sph::young_from_bulk_shear(K, mu), sph::poisson_ratio_from_bulk_shear(K, mu), H, L, 1.0);
 }
 
+void check_size(const PlateSpec& s) {
+  sph::check_particle_count((s.L + s.clamp_length) / s.dp * (s.H / s.dp), s.dp, "plate");
+}
+
 Plate make_plate(const PlateSpec& s, const sph::GrayParameters& scheme) {
   if (!(s.dp > 0) || !(s.L > 0) || !(s.H > 0) || s.clamp_length < 0 || s.clamp_layers < 1)
     throw std::invalid_argument("plate: need dp, L, H > 0, clamp length >= 0, clamp layers >= 1");
@@ -61,7 +65,7 @@ Plate make_plate(const PlateSpec& s, const sph::GrayParameters& scheme) {
   Plate p;
   const double rho0 = scheme.rho0, c0 = scheme.c0, m = rho0 * s.dp * s.dp;
   const double x0 = -s.clamp_length;
-  sph::check_particle_count((s.L + s.clamp_length) / s.dp * nrows, s.dp, "plate");
+  check_size(s);
   const int nx = static_cast<int>(std::lround((s.L + s.clamp_length) / s.dp));
   const int ny = static_cast<int>(std::lround(nrows));
   double best = std::numeric_limits<double>::max();

@@ -42,6 +42,10 @@ struct Plate {
 /// (centres at half-spacings, so the plate is exactly H thick), fixed layers above and below the clamped
 /// part and behind its end, and the initial velocity (7.3) on the particles with x > 0; masses rho0 dp^2 and
 /// velocities in units of c0 from the scheme's parameters.
+/// Refuses (std::invalid_argument, before anything is allocated) a plate whose particles cannot fit in memory
+/// (sph::check_particle_count); make_plate calls it, and a driver that runs several scenes calls it for each
+/// before its first run, so that a spacing typed wrong stops at once, not after the other scenes.
+void check_size(const PlateSpec& s);
 Plate make_plate(const PlateSpec& s, const sph::GrayParameters& scheme);
 
 }  // namespace scenes

@@ -7,12 +7,16 @@
 
 namespace scenes {
 
+void check_size(const RingsSpec& s) {
+  sph::check_particle_count(2.0 * std::pow(2.0 * s.r_outer / s.dp, 2), s.dp, "rings");  // the squares scanned
+}
+
 Rings make_rings(const RingsSpec& s, double rho0) {
   if (!(s.dp > 0) || !(s.r_outer > s.r_inner) || s.r_inner < 0 || s.gap < 0)
     throw std::invalid_argument("rings: need dp > 0, 0 <= r_inner < r_outer, gap >= 0");
   Rings r;
   const double m = rho0 * s.dp * s.dp;
-  sph::check_particle_count(2.0 * std::pow(2.0 * s.r_outer / s.dp, 2), s.dp, "rings");  // the squares scanned
+  check_size(s);
   const int n = static_cast<int>(std::ceil(2.0 * s.r_outer / s.dp - 1e-9));
   const double ri2 = s.r_inner * s.r_inner, ro2 = s.r_outer * s.r_outer;
   const double offset = s.r_outer + 0.5 * s.gap;

@@ -26,6 +26,10 @@ struct Rings {
 
 /// Square-grid points x = -r_outer + i dp (as numpy.mgrid[-ro:ro:dx] in PySPH's example) with
 /// r_inner^2 <= |x|^2 < r_outer^2, one ring left of the other, velocities +-speed along x.
+/// Refuses (std::invalid_argument, before anything is allocated) a rings whose particles cannot fit in memory
+/// (sph::check_particle_count); make_rings calls it, and a driver that runs several scenes calls it for each
+/// before its first run, so that a spacing typed wrong stops at once, not after the other scenes.
+void check_size(const RingsSpec& s);
 Rings make_rings(const RingsSpec& s, double rho0);
 
 }  // namespace scenes

@@ -26,10 +26,14 @@ sph::GrayOptions slab_options() {
   return o;
 }
 
+void check_size(const SlabSpec& s) {
+  sph::check_particle_count((s.L / s.dp) * (s.H / s.dp), s.dp, "slab");
+}
+
 Slab make_slab(const SlabSpec& s, double rho0) {
   if (!(s.dp > 0) || !(s.L > 0) || !(s.H > 0) || !(s.band > 0) || s.end_accel < 0 || !(s.margin > 0))
     throw std::invalid_argument("slab: need dp, L, H, band, margin > 0 and end acceleration >= 0");
-  sph::check_particle_count((s.L / s.dp) * (s.H / s.dp), s.dp, "slab");
+  check_size(s);
   const long nx = std::lround(s.L / s.dp), ny = std::lround(s.H / s.dp);
   Slab slab;
   slab.nx = nx;

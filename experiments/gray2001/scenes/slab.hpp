@@ -38,6 +38,10 @@ struct Slab {
 /// Particles at ((i + 1/2) dp, (j + 1/2) dp), i < nx = round(L / dp), j < ny = round(H / dp) (at dp = 0.016
 /// the slab is 188 x 63 particles, 3.008 x 1.008: L / dp is not an integer); the bands are Driven at
 /// -end_accel (left) and +end_accel (right) along x, everything starts at rest.
+/// Refuses (std::invalid_argument, before anything is allocated) a slab whose particles cannot fit in memory
+/// (sph::check_particle_count); make_slab calls it, and a driver that runs several scenes calls it for each
+/// before its first run, so that a spacing typed wrong stops at once, not after the other scenes.
+void check_size(const SlabSpec& s);
 Slab make_slab(const SlabSpec& s, double rho0);
 
 /// The scheme of Section 7.3: the scheme's defaults (parameters.hpp) with mu = 0.3.
