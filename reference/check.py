@@ -164,22 +164,24 @@ def band_end(bound, target, values):
     return None if v is None else factor * v
 
 
+def finite_number(text):
+    try:
+        return math.isfinite(float(text))
+    except ValueError:
+        return False
+
+
 def row_problems(r):
     """What makes a reference row uncheckable (its file and quantity named), as a list of messages."""
     line = f":{r['ref_line']}" if r.get("ref_line", "") != "" else ""
     where = f"reference/{r['ref_file']}{line} {r['target']}/{r['quantity']}"
     out = []
-    for col in ("published", "tolerance"):
-        try:
-            if not math.isfinite(float(r[col] or (0 if col == "tolerance" else "x"))):
-                raise ValueError
-        except ValueError:
-            out.append(f"{where}: {col} must be a finite number, not '{r[col]}'")
-    try:
-        if float(r["tolerance"] or 0) < 0:
-            out.append(f"{where}: tolerance must not be negative")
-    except ValueError:
-        pass
+    if not finite_number(r["published"]):
+        out.append(f"{where}: published must be a finite number, not '{r['published']}'")
+    if r["tolerance"] and not finite_number(r["tolerance"]):  # empty: 0
+        out.append(f"{where}: tolerance must be a finite number, not '{r['tolerance']}'")
+    elif float(r["tolerance"] or 0) < 0:
+        out.append(f"{where}: tolerance must not be negative")
     if r["target"] != r["ref_file"][:-len(".csv")]:
         out.append(f"{where}: the row's target is not its file's ({r['ref_file']})")
     if r["compare"] not in COMPARES:

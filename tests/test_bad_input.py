@@ -63,16 +63,16 @@ def run(binary, args, out_dir):
 
 
 def options(binary):
-    """[(name, type, usage with its constraints, is a list)] from the driver's --help."""
+    """[(name, type, usage with its constraints, is a list)] and the text of the driver's --help."""
     out = subprocess.run([binary, "--help"], capture_output=True, text=True, timeout=30).stdout
     # (a list option's usage ends in '...', before the two spaces that start its help text)
     return [(m.group(1), m.group(2), l.strip().split("  ")[0], l.strip().split("  ")[0].endswith("..."))
-            for l in out.splitlines() for m in [OPTION.match(l)] if m]
+            for l in out.splitlines() for m in [OPTION.match(l)] if m], out
 
 
 def cases(binary, tmp):
     """(class, args, what the message must name) for every class of bad input the driver has."""
-    opts = options(binary)
+    opts, helptext = options(binary)
     out = [("unknown option", ["--no-such-option", "1"], ["--no-such-option"])]
     number = next((o for o in opts if o[1] in ("FLOAT", "INT", "UINT")), None)
     if number:
@@ -90,7 +90,6 @@ def cases(binary, tmp):
     out.append(("unwritable output", ["--out", os.path.join(blocker, "out")], ["--out", "cannot write"]))
     names = {o[0]: o for o in opts}
     spacing = next((s for s in SPACINGS if s in names), None)
-    helptext = subprocess.run([binary, "--help"], capture_output=True, text=True).stdout
     n_is_count = any(l.strip().startswith("--n INT") and "particles" in l for l in helptext.splitlines())
     if spacing:
         out.append(("too many particles", [f"--{spacing}", TINY], ["particles", "coarser spacing"]))

@@ -2,7 +2,7 @@
 // overrides recorded into every output file, the values file read by `make check`, and error handling
 // (a bad parameter or a failed run prints one clear line and exits non-zero, never a silent result).
 // CLI11 is included by driver.cpp only: parsing its header took ~10 s of every driver's ~18 s compile (half of
-// a fresh build), so param() is defined there for the parameter types drivers use (ParamTypes below).
+// a fresh build), so param() is defined there for the parameter types drivers use (listed at param below).
 //
 // Usage in a driver:
 //   int main(int argc, char** argv) {
