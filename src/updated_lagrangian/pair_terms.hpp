@@ -162,19 +162,25 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
       const double* __restrict rho_ = rho.data();
       Vec2* __restrict dv_avg = q.dv_avg.data();
       double* __restrict rho_sum = q.rho_sum.data();
-      for (std::size_t a = a_begin; a < a_end; ++a)
+      // Row a's own sums are carried in registers (see pass 2).
+      for (std::size_t a = a_begin; a < a_end; ++a) {
+        Vec2 dv_avg_a = dv_avg[a];
+        double rho_sum_a = rho_sum[a];
         for (std::uint32_t k = row_[a], end = row_[a] + active_[a]; k < end; ++k) {
           const std::uint32_t b = nb_[k];
           if constexpr (Terms::xsph) {
             const Vec2 w = (v_[b] - v_[a]) * (W_[k] / (0.5 * (rho_[a] + rho_[b])));
-            dv_avg[a] += m_[b] * w;
+            dv_avg_a += m_[b] * w;
             dv_avg[b] -= m_[a] * w;
           }
           if constexpr (Terms::summation) {
-            rho_sum[a] += m_[b] * W_[k];
+            rho_sum_a += m_[b] * W_[k];
             rho_sum[b] += m_[a] * W_[k];
           }
         }
+        if constexpr (Terms::xsph) dv_avg[a] = dv_avg_a;
+        if constexpr (Terms::summation) rho_sum[a] = rho_sum_a;
+      }
 #pragma omp barrier
     }
 
@@ -210,6 +216,14 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
       const double alpha = p.alpha, beta = p.beta, c0 = p.c0;
       for (std::size_t a = a_begin; a < a_end; ++a) {
         const Tensor2 Aa = A_[a];
+        // Row a's own sums in registers: its pairs reach only b > a, so nothing else writes a's entries
+        // during the row, and loading them first and storing them after adds the same terms in the same
+        // order (bit-identical). Through memory, every pair's store to b could alias a's entries, so the
+        // compiler reloaded and stored a's sums for every pair.
+        Vec2 acc_a = acc[a];
+        double drho_a = Terms::summation ? 0.0 : drho[a];
+        const double* ga_mem = grad_v[a].data();
+        double ga0 = ga_mem[0], ga1 = ga_mem[1], ga2 = ga_mem[2], ga3 = ga_mem[3];
         for (std::uint32_t k = row_[a], end = row_[a] + active_[a]; k < end; ++k) {
           const std::uint32_t b = nb_[k];
           const Vec2 gW = dx_[k] * F_[k];  // grad_a W_ab (3.2)
@@ -239,23 +253,26 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
             }
           }
           const Vec2 f(std::fma(M[2], gW.y(), M[0] * gW.x()), std::fma(M[3], gW.y(), M[1] * gW.x()));  // M gW
-          acc[a] += m_[b] * f;
+          acc_a += m_[b] * f;
           acc[b] -= m_[a] * f;
           const Vec2 vab = vhat_[a] - vhat_[b];
           if constexpr (!Terms::summation) {
             const double d = vab.dot(gW);
-            drho[a] += m_[b] * d;
+            drho_a += m_[b] * d;
             drho[b] += m_[a] * d;
           }
           // G = vab gW^T by components: as an Eigen temporary it went through the stack in two halves and
           // was read back whole, a store-forwarding stall that took a fifth of pass 2.
           const double G00 = vab.x() * gW.x(), G10 = vab.y() * gW.x(), G01 = vab.x() * gW.y(), G11 = vab.y() * gW.y();
-          double* __restrict ga = grad_v[a].data();  // column-major: (0,0), (1,0), (0,1), (1,1)
-          double* __restrict gb = grad_v[b].data();
+          double* __restrict gb = grad_v[b].data();  // column-major: (0,0), (1,0), (0,1), (1,1)
           const double Va = volume_[a], Vb = volume_[b];
-          ga[0] -= Vb * G00; ga[1] -= Vb * G10; ga[2] -= Vb * G01; ga[3] -= Vb * G11;
+          ga0 -= Vb * G00; ga1 -= Vb * G10; ga2 -= Vb * G01; ga3 -= Vb * G11;
           gb[0] -= Va * G00; gb[1] -= Va * G10; gb[2] -= Va * G01; gb[3] -= Va * G11;
         }
+        acc[a] = acc_a;
+        if constexpr (!Terms::summation) drho[a] = drho_a;
+        double* ga = grad_v[a].data();
+        ga[0] = ga0; ga[1] = ga1; ga[2] = ga2; ga[3] = ga3;
       }
     }
 #pragma omp barrier
