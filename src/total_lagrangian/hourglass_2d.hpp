@@ -38,13 +38,20 @@ class HourglassControl {
     K_.resize(b.nr, b.nr + b.ng);
     K_.setFromTriplets(tr.begin(), tr.end());
     K_.makeCompressed();
+    // X_j - X_i of every entry: the reference configuration does not move, so the offsets are computed once
+    // instead of gathered from the positions at every step.
+    offset_.resize(K_.nonZeros());
+    for (int i = 0; i < b.nr; ++i)
+      for (int e = K_.outerIndexPtr()[i]; e < K_.outerIndexPtr()[i + 1]; ++e) offset_[e] = b.all[K_.innerIndexPtr()[e]] - b.all[i];
   }
-  /// Adds the control force of component c (before the division by rho) to a.
-  void add(const TlBody2D& b, int c, Eigen::VectorXd& a) const;
+  /// Adds the control force of both components (before the division by rho) to a0 and a1, in one
+  /// traversal of the pairs.
+  void add(const TlBody2D& b, Eigen::VectorXd& a0, Eigen::VectorXd& a1) const;
 
  private:
   double gamma_ = 0;
-  SparseMatrix K_;  // real rows x all columns
+  SparseMatrix K_;              // real rows x all columns
+  std::vector<Vec2> offset_;    // X_j - X_i per entry of K_
 };
 
 }  // namespace sph

@@ -47,9 +47,9 @@ class TlStepperOf final : public TlStepper2D {
     }
     closure_.ghost_stresses(b, b.t);
     divergence_2d(b.m, b.P, b.a[0], b.a[1]);  // both components first: the passes below read only their own
+    for (int c = 0; c < 2; ++c) closure_.boundary_forces(b, c, b.a[c]);
+    if constexpr (Hourglass) hourglass_.add(b, b.a[0], b.a[1]);
     for (int c = 0; c < 2; ++c) {
-      closure_.boundary_forces(b, c, b.a[c]);
-      if constexpr (Hourglass) hourglass_.add(b, c, b.a[c]);
       b.a[c] /= b.cfg.rho;
       if constexpr (Damping) b.a[c].head(nr) -= b.cfg.damping / dt * (b.u[c].head(nr) - b.up[c].head(nr));
       central_difference_step(b.u[c], b.up[c], b.a[c], dt, 0, nr);
