@@ -51,7 +51,7 @@ for i, (name, label, dp) in enumerate(runs):
     if len(row) and row.fracture_time.iloc[0] > 0:
         axes[0].axvline(row.fracture_time.iloc[0], color=color, ls=":", lw=0.8)
 axes[0].set_xlabel("t")
-axes[0].plot([542], [0.16], "k*", ms=9, label="paper: fracture at t = 542, neck ~10 x 0.016")
+axes[0].plot([542], [0.16], "k*", ms=9, label="paper: at t = 542 the neck ~10 x 0.016, and it fractures")
 axes[0].set_ylabel("neck width (cm; until the ends part, dotted)")
 axes[0].legend(fontsize=7)
 axes[1].set_xlabel("strain of the ends' separation")

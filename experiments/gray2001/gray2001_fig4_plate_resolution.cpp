@@ -8,6 +8,7 @@
 //
 // Parameters: as gray2001_table1_2_plate_periods, but each run stops at the tip's second zero crossing: one
 // period, two half-cycle extremes (the decay per period is 1 - (second / first)^2).
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -28,6 +29,8 @@ int main(int argc, char** argv) {
   d.param("cfl", scheme.cfl, "time-step factor").positive();
   d.param("mu", scheme.mu, "shear modulus (Fig 4: 0.22)").non_negative();
   d.param("Vf", Vf, "tip speed / c0 (Fig 4: 0.01)");
+  d.param("eps", scheme.eps_artificial, "artificial stress factor (Sec 6: 0.3; 0 = none: the energy study of issue 15)").non_negative();
+  d.param("eps-xsph", scheme.eps_xsph, "XSPH factor (Sec 3: 0.5; 0 = particles move with their own velocity)").non_negative();
   d.param("periods", periods, "half the longest run, in theoretical periods (runs stop at the second crossing)").positive();
 
   return d.run(argc, argv, [&] {
@@ -69,6 +72,15 @@ int main(int argc, char** argv) {
       d.value("T_" + tag.str(), T, "period from the zero crossings");
       d.value("amplitude_" + tag.str(), a1, "first extreme of the tip displacement");
       d.value("decay_per_period_" + tag.str(), decay, "1 - (second extreme / first)^2");
+      // The scheme has no energy source: kinetic + elastic energy may only fall (viscosity).
+      if (!r.trace.empty()) {
+        const double E0 = r.trace.front().ke + r.trace.front().ee;
+        double E_max = E0;
+        for (const auto& smp : r.trace) E_max = std::max(E_max, smp.ke + smp.ee);
+        d.value("energy_change_" + tag.str(), (r.trace.back().ke + r.trace.back().ee) / E0 - 1,
+                "(kinetic + elastic) at the run's end (second crossing) over the start, minus 1");
+        d.value("energy_peak_" + tag.str(), E_max / E0 - 1, "largest (kinetic + elastic) over the start, minus 1");
+      }
       if (run.alpha == alpha) T_of_n.push_back(T), A_of_n.push_back(a1);
     }
     // Convergence ('the period and amplitude of the oscillations are converging'): successive differences shrink.

@@ -49,6 +49,15 @@ std::string dp_tag(double dp) {
   return s.str();
 }
 
+// The first sample, before the ends part, whose neck is at most `width` wide (-1: none).
+double first_neck_at_most(const std::vector<scenes::SlabSample>& trace, double width) {
+  for (const auto& m : trace) {
+    if (m.parted) break;
+    if (m.neck_width <= width) return m.t;
+  }
+  return -1;
+}
+
 // The sample closest to time t.
 const scenes::SlabSample& at_time(const std::vector<scenes::SlabSample>& trace, double t) {
   std::size_t best = 0;
@@ -63,6 +72,8 @@ int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig8_10_slab", "G-fig8", "Gray et al. 2001 Figs 8-10: slab under tension with von Mises plasticity");
   double dp = 0.016, end_accel = 2.5e-6, band = 0.2, t_max_eps0 = 300, t_max = 700;
   sph::GrayParameters scheme = scenes::slab_scheme();  // Sec 7.3: mu = 0.3, the yield 0.03
+  // Where the text's neck is read (Sec 7.3, "at t = 542 ... only ~10 particles thick"): measurement points.
+  const double neck_time = 542, neck_particles = 10;
   double frame_every_eps0 = 20, frame_every = 50, sample_dt = 2.0;
   std::vector<double> study_dps{0.064, 0.032}, runs{0.0, 0.3};
   d.param("dp", dp, "particle spacing (Sec 7.3: 0.016)").positive();
@@ -151,6 +162,14 @@ int main(int argc, char** argv) {
         d.value("eps0.3_neck_before_fracture", r.neck_before_fracture,
                 "neck width (cm) at the last sample before the ends parted");
         d.value("eps0.3_neck_before_fracture_particles", r.neck_before_fracture / dp, "the same in particle spacings");
+        // READING of "at t = 542, the notching reduces the central neck until it is only ~10 particles thick
+        // and it fractures" (Sec 7.3): 542 the time the neck has narrowed to ~10 particles, the fracture
+        // after it; and ~10 particles the neck at t = 542, not at the last moment before parting.
+        d.value("eps0.3_neck_10dp_time", first_neck_at_most(r.trace, neck_particles * dp),
+                "first sample, before parting, with the neck at most 10 dp wide (-1: none)");
+        const auto& s542 = at_time(r.trace, neck_time);
+        d.value("eps0.3_neck_at_t542", std::abs(s542.t - neck_time) <= sample_dt ? s542.neck_width : NAN,
+                "neck width (cm) at t = 542, the time of the text's neck of ~10 particles (nan: the run ended before)");
         d.value("eps0.3_onset_strain", r.onset_strain, "strain when the neck fell below 0.9 x the median width");
         d.value("eps0.3_crack_from_centre", std::abs(r.crack_x - 0.5 * std::lround(3.0 / dp) * dp) / 3.0,
                 "|crack x - slab centre| / length at fracture");
@@ -159,7 +178,7 @@ int main(int argc, char** argv) {
     }
     // Resolution study of the eps = 0.3 fracture time.
     auto study = d.csv("resolution.csv", {"dp", "particles", "steps", "wall_s", "fracture_time", "neck_before_fracture_over_dp",
-                                          "onset_strain"});
+                                          "onset_strain", "neck_10dp_time"});
     double coarse_fracture = NAN, coarse_dp = 0;
     for (const double sdp : study_dps) {
       if (sdp == 0) continue;  // --study-dps 0: no study
@@ -167,7 +186,8 @@ int main(int argc, char** argv) {
       const auto r = scenes::run_slab(spec(0.3, sdp), {}, "slab eps0.3 " + dp_tag(sdp));
       write_trace("trace_eps0.3_" + dp_tag(sdp) + ".csv", r);
       record(0.3, sdp, r);
-      study.row(sdp, r.particles, r.steps, r.wall_s, r.fracture_time, r.neck_before_fracture / sdp, r.onset_strain);
+      study.row(sdp, r.particles, r.steps, r.wall_s, r.fracture_time, r.neck_before_fracture / sdp, r.onset_strain,
+                first_neck_at_most(r.trace, neck_particles * sdp));
       if (std::abs(sdp - 2 * dp) < 1e-12) {
         coarse_fracture = r.fracture_time;
         coarse_dp = sdp;
