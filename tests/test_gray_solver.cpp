@@ -56,6 +56,37 @@ TEST(GraySolver, PairForcesConserveLinearMomentumExactly) {
     }
 }
 
+// GraySolver::power_budget (issue 15 a): each term's power is sum_a m_a v_a . (the acceleration with the term
+// minus without it), and the viscosity's is never positive.
+TEST(GraySolver, PowerBudgetIsThePowerOfEachTermsAcceleration) {
+  sph::ElasticBody body = random_block(12, 0.1, 5, true);
+  sph::GrayOptions all;
+  const sph::GrayParameters p = params_for(body, 0.1);
+  sph::ElasticBody copy = body;
+  sph::GraySolver full(body, p, all);
+  const auto budget = full.power_budget();
+  const auto dv_full = full.evaluate_now().dv;
+  auto power_of = [&](bool artificial_stress) {
+    sph::ElasticBody b = copy;
+    sph::GrayOptions o = all;
+    (artificial_stress ? o.artificial_stress : o.viscosity) = false;
+    sph::GraySolver without(b, p, o);
+    const auto& dv = without.evaluate_now().dv;
+    double power = 0, scale = 0;
+    for (std::size_t a = 0; a < b.size(); ++a) {
+      power += b.m[a] * b.v[a].dot(dv_full[a] - dv[a]);
+      scale += b.m[a] * b.v[a].norm() * dv_full[a].norm();
+    }
+    return std::make_pair(power, scale);
+  };
+  const auto [p_art, s_art] = power_of(true);
+  const auto [p_visc, s_visc] = power_of(false);
+  EXPECT_NEAR(budget.artificial_stress, p_art, 1e-12 * s_art);
+  EXPECT_NEAR(budget.viscosity, p_visc, 1e-12 * s_visc);
+  EXPECT_LT(budget.viscosity, 0.0);                        // random velocities: some pairs approach
+  EXPECT_GT(std::abs(budget.artificial_stress), 1e-6 * s_art);  // not trivially zero
+}
+
 double torque(const sph::ElasticBody& body, const sph::GraySolver::Rates& r) {
   double t = 0;
   for (std::size_t a = 0; a < body.size(); ++a)

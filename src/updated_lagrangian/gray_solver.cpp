@@ -95,4 +95,36 @@ double GraySolver::elastic_energy() const {
   return e;
 }
 
+GraySolver::PowerBudget GraySolver::power_budget() const {
+  const long n = static_cast<long>(body_.size());
+  const auto& v = body_.v;
+  const auto& m = body_.m;
+  const auto& rho = body_.rho;
+  std::vector<Tensor2> R(o_.artificial_stress ? n : 0);
+  for (std::size_t a = 0; a < R.size(); ++a) R[a] = artificial_stress(stress(a), rho[a], p_.eps_artificial);
+  const double eta2 = 0.01 * h_ * h_, inv_Wdp = 1.0 / W_dp_;
+  double p_art = 0, p_visc = 0;
+#pragma omp parallel for reduction(+ : p_art, p_visc) schedule(static)
+  for (long a = 0; a < n; ++a)
+    for (std::uint32_t k = pairs_.first(a); k < pairs_.last(a); ++k) {  // every pair once: b > a
+      const std::uint32_t b = pairs_.b[k];
+      const Vec2 gW = pairs_.dx[k] * pairs_.F[k];
+      const Vec2 vab = v[a] - v[b];
+      const double mm = m[a] * m[b];  // the pair adds m_b M gW to a and -m_a M gW to b
+      if (o_.artificial_stress) {
+        const double fn = ipow(pairs_.W[k] * inv_Wdp, p_.n_artificial);
+        p_art += mm * fn * vab.dot((R[a] + R[b]) * gW);
+      }
+      if (o_.viscosity) {
+        const double vr = vab.dot(pairs_.dx[k]);
+        if (vr < 0.0) {
+          const double mu_ab = h_ * vr / (pairs_.dx[k].squaredNorm() + eta2);
+          const double Pi = (-p_.alpha * p_.c0 * mu_ab + p_.beta * mu_ab * mu_ab) / (0.5 * (rho[a] + rho[b]));
+          p_visc -= mm * Pi * vab.dot(gW);
+        }
+      }
+    }
+  return {p_art, p_visc};
+}
+
 }  // namespace sph

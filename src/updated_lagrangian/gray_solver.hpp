@@ -56,6 +56,12 @@ class GraySolver {
   Tensor2 stress(std::size_t a) const;
   /// Shear part sum (m/rho) S:S/(4 mu) plus volumetric part sum m c0^2 (ln(rho/rho0) + rho0/rho - 1).
   double elastic_energy() const;
+  /// The power of two terms of the momentum equation at the current state, sum_a m_a v_a . (the term's
+  /// acceleration of a): the artificial stress R_ab f^n (3.12) and Monaghan's viscosity (zero for a term that
+  /// is off). Neither has a counterpart in elastic_energy(), so d(kinetic + elastic)/dt = these plus the
+  /// stress power's mismatch. A diagnostic pass over the pairs (allocates), outside the step.
+  struct PowerBudget { double artificial_stress = 0, viscosity = 0; };
+  PowerBudget power_budget() const;
 
  private:
   using Evaluate = void (*)(ElasticBody&, const GrayParameters&, const CubicSpline&, double, double, const PairList&,

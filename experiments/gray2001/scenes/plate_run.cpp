@@ -25,6 +25,11 @@ PlateRunResult run_plate(const PlateRunSpec& s,
   auto fragments = [&] { return sph::find_fragments(body.x, body.box, s.fracture_link * s.plate.dp, free_particles).count; };
   auto sample = [&](std::size_t pieces) {
     r.trace.push_back({solver.time(), body.x[plate.tip].y() - y0, sph::kinetic_energy(solver), solver.elastic_energy(), pieces});
+    if (s.power_budget) {
+      const auto p = solver.power_budget();
+      r.trace.back().p_art = p.artificial_stress;
+      r.trace.back().p_visc = p.viscosity;
+    }
     if (on_sample) on_sample(solver, body);
   };
   // Fracture checks every fracture_check_dt (and at t = 0), samples of the tip every sample_dt; a run stops

@@ -2,6 +2,7 @@
 // analysis (zero crossings, period, amplitude decay, fracture).
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -23,9 +24,11 @@ struct PlateRunSpec {
   double fracture_check_dt = 10.0;
   double run_after_fracture = -1;  ///< stop this long after the first fracture; < 0: never stop
   int stop_after_crossings = -1;   ///< stop once the tip has crossed its start line this often; < 0: never
+  bool power_budget = false;       ///< record GraySolver::power_budget() at every sample (a pass over the pairs)
 };
 
-struct TipSample { double t, y, ke, ee; std::size_t fragments; };
+/// p_art, p_visc: the power of the artificial stress and the viscosity (NaN unless PlateRunSpec::power_budget).
+struct TipSample { double t, y, ke, ee; std::size_t fragments; double p_art = NAN, p_visc = NAN; };
 
 struct PlateRunResult {
   std::vector<TipSample> trace;    ///< y is the tip displacement from its initial position
