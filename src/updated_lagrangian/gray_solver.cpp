@@ -112,14 +112,13 @@ GraySolver::PowerBudget GraySolver::power_budget() const {
       const Vec2 vab = v[a] - v[b];
       const double mm = m[a] * m[b];  // the pair adds m_b M gW to a and -m_a M gW to b
       if (o_.artificial_stress) {
-        const double fn = ipow(pairs_.W[k] * inv_Wdp, p_.n_artificial);
+        const double fn = artificial_stress_fn(pairs_.W[k] * inv_Wdp, p_.n_artificial);
         p_art += mm * fn * vab.dot((R[a] + R[b]) * gW);
       }
       if (o_.viscosity) {
         const double vr = vab.dot(pairs_.dx[k]);
         if (vr < 0.0) {
-          const double mu_ab = h_ * vr / (pairs_.dx[k].squaredNorm() + eta2);
-          const double Pi = (-p_.alpha * p_.c0 * mu_ab + p_.beta * mu_ab * mu_ab) / (0.5 * (rho[a] + rho[b]));
+          const double Pi = monaghan_pi(vr, pairs_.dx[k].squaredNorm(), h_, eta2, p_.alpha, p_.beta, p_.c0, rho[a], rho[b]);
           p_visc -= mm * Pi * vab.dot(gW);
         }
       }

@@ -93,6 +93,17 @@ inline double ipow(double x, int n) {
   return r;
 }
 
+/// f^n of the artificial stress (3.12), f = W / W(dp): the paper's n = 4 by three multiplications (ipow's
+/// order: the same bits) instead of ipow's loop, whose branch the compiler can take out of a pair loop.
+inline double artificial_stress_fn(double f, int n) { return n == 4 ? ((f * f) * f) * f : ipow(f, n); }
+
+/// Monaghan's viscosity Pi_ab >= 0 of an approaching pair (vr = v_ab . x_ab < 0; r2 = |x_ab|^2, eta2 = 0.01 h^2).
+inline double monaghan_pi(double vr, double r2, double h, double eta2, double alpha, double beta, double c0,
+                          double rho_a, double rho_b) {
+  const double mu_ab = h * vr / (r2 + eta2);
+  return (-alpha * c0 * mu_ab + beta * mu_ab * mu_ab) / (0.5 * (rho_a + rho_b));
+}
+
 /// The rates of the body's current state into `out`. With summation density it also sets body.rho.
 /// h = h_over_dp dp, W_dp = W(dp, h) (the normalisation of f = W / W(dp)). `pairs` holds every pair once
 /// (PairList::half): b > a in a's row. One parallel region: pass 1, the per-particle terms, pass 2 and the
@@ -233,10 +244,7 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
           const double* Ab = A_[b].data();
           double M[4] = {Aa(0, 0) + Ab[0], Aa(1, 0) + Ab[1], Aa(0, 1) + Ab[2], Aa(1, 1) + Ab[3]};
           if constexpr (Terms::artificial_stress) {
-            // The paper's n = 4 by three multiplications (ipow's order: the same bits) instead of ipow's loop,
-            // whose branch the compiler can take out of the pair loop (nart is invariant).
-            const double x = W_[k] * inv_Wdp;
-            const double fn = nart == 4 ? ((x * x) * x) * x : ipow(x, nart);
+            const double fn = artificial_stress_fn(W_[k] * inv_Wdp, nart);
             const double *Ra = R_[a].data(), *Rb = R_[b].data();
             for (int c = 0; c < 4; ++c) M[c] = std::fma(Ra[c] + Rb[c], fn, M[c]);
           }
@@ -246,8 +254,7 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
             // two divisions then run for every pair.)
             const double vr = (v_[a] - v_[b]).dot(dx_[k]);
             if (vr < 0.0) {
-              const double mu_ab = h * vr / (dx_[k].squaredNorm() + eta2);
-              const double Pi = (-alpha * c0 * mu_ab + beta * mu_ab * mu_ab) / (0.5 * (rho_[a] + rho_[b]));
+              const double Pi = monaghan_pi(vr, dx_[k].squaredNorm(), h, eta2, alpha, beta, c0, rho_[a], rho_[b]);
               M[0] -= Pi;
               M[3] -= Pi;
             }
