@@ -233,6 +233,28 @@ sph::Tensor2 random_deviator(std::mt19937& rng, double scale) {
   return S;
 }
 
+// The shear energy of Gray's Hooke rate (issue 15 a): its rate is the stress power S : eps_dot for any
+// velocity gradient, spin included; the in-plane S:S / (4 mu) alone misses tr S tr(eps_dot) / 3.
+TEST(Hooke, ShearEnergyRateIsTheStressPower) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double mu = 0.22;
+  for (int trial = 0; trial < 100; ++trial) {
+    sph::Tensor2 S, L;
+    const double sxy = u(rng);
+    S << u(rng), sxy, sxy, u(rng);
+    L << u(rng), u(rng), u(rng), u(rng);
+    const sph::Tensor2 rate = sph::hooke_deviatoric_rate(mu, L, S);
+    const sph::Tensor2 eps_dot = 0.5 * (L + L.transpose());
+    const double h = 1e-6;  // d/dt by a central difference of the energy along S + t rate
+    const double dU = (sph::shear_energy_density(mu, S + h * rate) - sph::shear_energy_density(mu, S - h * rate)) / (2 * h);
+    const double power = (S.array() * eps_dot.array()).sum();
+    EXPECT_NEAR(dU, power, 1e-8) << "trial " << trial;
+    const double in_plane_only = (S.array() * rate.array()).sum() / (2 * mu);
+    if (std::abs(S.trace() * eps_dot.trace()) > 0.1) EXPECT_GT(std::abs(in_plane_only - power), 1e-3);
+  }
+}
+
 TEST(VonMises, InvariantMatchesTheThreeDimensionalDeviator) {
   std::mt19937 rng(21);
   for (int trial = 0; trial < 50; ++trial) {

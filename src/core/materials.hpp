@@ -159,6 +159,14 @@ inline Tensor2 hooke_deviatoric_rate(double mu, const Tensor2& grad_v, const Ten
   return 2.0 * mu * (eps_dot - eps_dot.trace() / 3.0 * Tensor2::Identity()) + S * omega.transpose() + omega * S;
 }
 
+/// The shear strain energy per unit volume that hooke_deviatoric_rate stores: (S:S + S_zz^2) / (4 mu) with
+/// S_zz = -tr S, the out-of-plane deviator its 1/3 implies (from a state whose 3D deviator is traceless, as
+/// S = 0). Its rate under hooke_deviatoric_rate is the stress power S : eps_dot (the rotation terms do no work);
+/// S:S alone misses tr S tr(eps_dot) / 3.
+inline double shear_energy_density(double mu, const Tensor2& S) {
+  return (S.squaredNorm() + S.trace() * S.trace()) / (4.0 * mu);
+}
+
 /// Poisson's ratio as printed in Gray et al. 2001 eq (2.8): (3K/mu - 2) / (2 (3K/mu + 2)).
 /// Note: the standard 3D relation is (3K - 2 mu) / (2 (3K + mu)); (2.8) has 2 mu where mu belongs in
 /// the denominator. Both are provided so the plate theory (7.1) can be evaluated under either reading.

@@ -89,7 +89,7 @@ double GraySolver::elastic_energy() const {
   const double c2 = p_.c0 * p_.c0;
   for (std::size_t a = 0; a < body_.size(); ++a) {
     const double r = body_.rho[a];
-    if (p_.mu > 0) e += body_.m[a] / r * body_.S[a].squaredNorm() / (4.0 * p_.mu);
+    if (p_.mu > 0) e += body_.m[a] / r * shear_energy_density(p_.mu, body_.S[a]);
     e += body_.m[a] * c2 * (std::log(r / p_.rho0) + p_.rho0 / r - 1.0);
   }
   return e;
@@ -100,11 +100,22 @@ GraySolver::PowerBudget GraySolver::power_budget() const {
   const auto& v = body_.v;
   const auto& m = body_.m;
   const auto& rho = body_.rho;
-  std::vector<Tensor2> R(o_.artificial_stress ? n : 0);
+  std::vector<Tensor2> R(o_.artificial_stress ? n : 0), A(o_.xsph ? n : 0);
   for (std::size_t a = 0; a < R.size(); ++a) R[a] = artificial_stress(stress(a), rho[a], p_.eps_artificial);
+  for (std::size_t a = 0; a < A.size(); ++a) A[a] = stress(a) / (rho[a] * rho[a]);
+  // w = v - vhat, the XSPH correction (3.6) at this state (zero without XSPH).
+  std::vector<Vec2> w(o_.xsph ? n : 0, Vec2::Zero());
+  if (o_.xsph)
+    for (long a = 0; a < n; ++a)
+      for (std::uint32_t k = pairs_.first(a); k < pairs_.last(a); ++k) {
+        const std::uint32_t b = pairs_.b[k];
+        const Vec2 dv = (v[b] - v[a]) * (pairs_.W[k] / (0.5 * (rho[a] + rho[b])));
+        w[a] -= p_.eps_xsph * m[b] * dv;
+        w[b] += p_.eps_xsph * m[a] * dv;
+      }
   const double eta2 = 0.01 * h_ * h_, inv_Wdp = 1.0 / W_dp_;
-  double p_art = 0, p_visc = 0;
-#pragma omp parallel for reduction(+ : p_art, p_visc) schedule(static)
+  double p_art = 0, p_visc = 0, p_xsph = 0;
+#pragma omp parallel for reduction(+ : p_art, p_visc, p_xsph) schedule(static)
   for (long a = 0; a < n; ++a)
     for (std::uint32_t k = pairs_.first(a); k < pairs_.last(a); ++k) {  // every pair once: b > a
       const std::uint32_t b = pairs_.b[k];
@@ -122,8 +133,9 @@ GraySolver::PowerBudget GraySolver::power_budget() const {
           p_visc -= mm * Pi * vab.dot(gW);
         }
       }
+      if (o_.xsph) p_xsph += mm * (w[a] - w[b]).dot((A[a] + A[b]) * gW);
     }
-  return {p_art, p_visc};
+  return {p_art, p_visc, p_xsph};
 }
 
 }  // namespace sph

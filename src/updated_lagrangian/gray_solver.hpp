@@ -54,13 +54,19 @@ class GraySolver {
   double density(std::size_t a) const { return body_.rho[a]; }
   /// Cauchy stress sigma = -P I + S of particle a.
   Tensor2 stress(std::size_t a) const;
-  /// Shear part sum (m/rho) S:S/(4 mu) plus volumetric part sum m c0^2 (ln(rho/rho0) + rho0/rho - 1).
+  /// Shear part sum (m/rho) (S:S + S_zz^2)/(4 mu), S_zz = -tr S, plus volumetric part
+  /// sum m c0^2 (ln(rho/rho0) + rho0/rho - 1).
   double elastic_energy() const;
-  /// The power of two terms of the momentum equation at the current state, sum_a m_a v_a . (the term's
-  /// acceleration of a): the artificial stress R_ab f^n (3.12) and Monaghan's viscosity (zero for a term that
-  /// is off). Neither has a counterpart in elastic_energy(), so d(kinetic + elastic)/dt = these plus the
-  /// stress power's mismatch. A diagnostic pass over the pairs (allocates), outside the step.
-  struct PowerBudget { double artificial_stress = 0, viscosity = 0; };
+  /// What makes d(kinetic + elastic)/dt differ from zero at the current state (zero for a term that is off):
+  /// - artificial_stress, viscosity: sum_a m_a v_a . (the term's acceleration of a), for R_ab f^n (3.12) and
+  ///   Monaghan's viscosity, which have no counterpart in elastic_energy();
+  /// - xsph: sum_a m_a (v_a - vhat_a) . (the stress term's acceleration of a): the density and stress rates
+  ///   are those of the XSPH velocity vhat (3.6), so the elastic energy gains the stress power of vhat, and
+  ///   the kinetic energy loses that of v.
+  /// What is left is the stress power's own mismatch (the pair weights m_b / rho_a^2 against V_b / rho_a of
+  /// the velocity gradient, the volume change of the shear energy): of the order of the density changes.
+  /// A diagnostic pass over the pairs (allocates), outside the step; continuity density assumed.
+  struct PowerBudget { double artificial_stress = 0, viscosity = 0, xsph = 0; };
   PowerBudget power_budget() const;
 
  private:

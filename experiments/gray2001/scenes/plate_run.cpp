@@ -29,6 +29,7 @@ PlateRunResult run_plate(const PlateRunSpec& s,
       const auto p = solver.power_budget();
       r.trace.back().p_art = p.artificial_stress;
       r.trace.back().p_visc = p.viscosity;
+      r.trace.back().p_xsph = p.xsph;
     }
     if (on_sample) on_sample(solver, body);
   };

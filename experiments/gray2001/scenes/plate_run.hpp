@@ -27,8 +27,9 @@ struct PlateRunSpec {
   bool power_budget = false;       ///< record GraySolver::power_budget() at every sample (a pass over the pairs)
 };
 
-/// p_art, p_visc: the power of the artificial stress and the viscosity (NaN unless PlateRunSpec::power_budget).
-struct TipSample { double t, y, ke, ee; std::size_t fragments; double p_art = NAN, p_visc = NAN; };
+/// p_art, p_visc, p_xsph: the power of the artificial stress, the viscosity and XSPH's velocity
+/// (GraySolver::PowerBudget; NaN unless PlateRunSpec::power_budget).
+struct TipSample { double t, y, ke, ee; std::size_t fragments; double p_art = NAN, p_visc = NAN, p_xsph = NAN; };
 
 struct PlateRunResult {
   std::vector<TipSample> trace;    ///< y is the tip displacement from its initial position
