@@ -37,6 +37,9 @@ int main(int argc, char** argv) {
   d.param("h-over-ps", p.h_over_ps, "cover radius in spacings (CHOSEN)").positive();
   d.param("settle", p.settle, "settling time after the ramp in 1/omega (CHOSEN)").non_negative();
   d.param("damping", p.damping, "mass-proportional damping in units of omega (CHOSEN)").non_negative();
+  d.param("dt-factor", p.dt_factor, "time step / (h / c_L) (CHOSEN)").positive();
+  d.param("closure-passes", p.closure_passes, "ghost displacements and gradient per step (TlConfig2D::closure_passes)").positive();
+  d.param("hooke", p.hooke, "linear (Hooke, small strain) instead of neo-Hookean");
   d.param("hourglass", p.hourglass, "zero-energy-mode control gamma (TlConfig2D::hourglass)").non_negative();
   d.param("variational", p.variational, "boundary scheme: variational (true) or ghost reflection (false)");
   return d.run(argc, argv, [&] {
@@ -49,6 +52,12 @@ int main(int argc, char** argv) {
         f.row(t, b.X(i).x(), b.X(i).y(), b.u(i).x(), b.u(i).y(), scenes::max_principal(T), T(0, 0), T(1, 1), T(0, 1));
       }
     });
+    auto hist = d.csv("history.csv", {"t", "smoothed_sigma1_hole_top", "peak_sigma1", "vmax"});
+    for (const auto& h : r.history) hist.row(h.t, h.smoothed_top, h.peak, h.vmax);
+    d.value("growth_rate", r.growth_rate, "d ln(largest speed)/dt over the last 3/omega, in units of omega");
+    d.value("fastest_X", r.fastest_X.x(), "reference x of the fastest particle at the last sample, m");
+    d.value("fastest_Y", r.fastest_X.y(), "reference y of the fastest particle at the last sample, m");
+    d.value("speed_rise", r.speed_rise, "largest particle speed at the end / its smallest after the ramp (> 1: a growing mode)");
     if (!r.finite) throw std::runtime_error("the sheet run became non-finite");
     d.value("peak_sigma1_MPa", r.peak_sigma1 / 1e6, "final max principal Cauchy stress over all particles");
     d.value("sigma1_hole_top_MPa", r.sigma1_hole_top / 1e6, "at the particle at (0, R), where Kirsch's peak lies");

@@ -36,6 +36,10 @@ struct TlConfig2D {
   /// The boundary closure: ghost reflection (ghost_reflection.hpp, every scene's) or the energy-consistent
   /// variational closure (variational_closure.hpp, kept for the comparison).
   enum class Closure { GhostReflection, Variational } closure = Closure::GhostReflection;
+  /// Ghost displacements and gradient evaluated this many times in each step, each ghost pass reading the
+  /// gradient of the one before (1: the closure's one-step-lagged tangential gradient; more: towards their fixed
+  /// point within the step; issue 15 b's experiment).
+  int closure_passes = 1;
 };
 
 /// The fields of the body: real particles [0, nr), ghosts [nr, nr + ng) in every vector.

@@ -37,8 +37,10 @@ class TlStepperOf final : public TlStepper2D {
   void ghost_displacements(TlBody2D& b) override { closure_.template ghost_displacements<Law>(b, b.t); }
 
   void step(TlBody2D& b, double dt) override {
-    closure_.template ghost_displacements<Law>(b, b.t);
-    b.gradient();
+    for (int pass = 0; pass < b.cfg.closure_passes; ++pass) {
+      closure_.template ghost_displacements<Law>(b, b.t);
+      b.gradient();
+    }
     const int nr = b.nr;
 #pragma omp parallel for schedule(static) if (nr > 2000)
     for (int i = 0; i < nr; ++i) {

@@ -48,6 +48,7 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   cfg.closure = p.variational ? sph::TlConfig2D::Closure::Variational : sph::TlConfig2D::Closure::GhostReflection;
   cfg.damping = p.damping * omega;
   cfg.hourglass = p.hourglass;
+  cfg.closure_passes = p.closure_passes;
   cfg.law = p.hooke ? sph::TlConfig2D::Law::Hooke : sph::TlConfig2D::Law::NeoHookean;
   sph::TlSolver2D body(std::move(cfg));
   HoleResult r;
@@ -85,6 +86,16 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   const auto outcome = sph::run(body, {dt, n}, observe, [&](const sph::TlSolver2D& b) { progress.update(b.time(), b.steps()); });
   r.steps = static_cast<int>(outcome.steps);
   r.finite = !outcome.blew_up();
+  {  // least-squares slope of ln vmax over the last 3/omega of the finite samples
+    double s0 = 0, st = 0, sy = 0, stt = 0, sty = 0;
+    const double t_last = r.history.empty() ? 0.0 : r.history.back().t;
+    for (const auto& h : r.history)
+      if (h.t >= t_last - 3.0 / omega && h.vmax > 0 && std::isfinite(h.vmax)) {
+        const double t = h.t * omega, y = std::log(h.vmax);
+        s0 += 1; st += t; sy += y; stt += t * t; sty += t * y;
+      }
+    if (s0 >= 3) r.growth_rate = (s0 * sty - st * sy) / (s0 * stt - st * st);
+  }
   r.wall_s = outcome.wall_s;
   if (r.finite) {
     for (int i = 0; i < body.n_real(); ++i) r.peak_sigma1 = std::max(r.peak_sigma1, max_principal(body.cauchy(i)));

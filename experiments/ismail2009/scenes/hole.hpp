@@ -20,13 +20,14 @@ struct HoleParams {
   double dt_factor = 0.3;     ///< dt / (h / c_L)
   double ramp_transits = 2;   ///< load ramp time in shear transits a / c_T (CHOSEN)
   double settle = 12;         ///< run on for settle / omega after the ramp (CHOSEN)
-  /// Mass-proportional damping in units of omega (CHOSEN: 4). At 2 (critical for the slowest mode) a weak
-  /// instability of the ghost-reflection closure at the loaded and free edges, growing at a rate between omega
-  /// and 2 omega, outruns it at fine resolution (201 per side; the linear law from 81); at 4 no run rises.
+  /// Mass-proportional damping in units of omega (CHOSEN: 4). It takes damping/2 off the growth rate of the
+  /// ghost-reflection closure's corner mode (1.85 omega at 81, 2.50 at 161 undamped: the resolution driver's
+  /// edge series, issue 15 b): at 2 the mode outruns it from 81 on; at 4 it still grows at 0.5 omega at 161.
   double damping = 4;
   bool variational = false;   ///< boundary scheme (src/total_lagrangian/body_2d.hpp): ghost reflection by default
   double hourglass = 0.0;     ///< zero-energy-mode control gamma (TlConfig2D::hourglass)
   bool hooke = false;         ///< linear (Hooke, small strain) instead of neo-Hookean: the linear reference
+  int closure_passes = 1;     ///< TlConfig2D::closure_passes
 };
 
 struct HoleResult {
@@ -45,6 +46,9 @@ struct HoleResult {
   /// At rest: largest particle speed at the end over its largest value during the run.
   double rest_speed_ratio = 0;
   sph::Vec2 fastest_X = sph::Vec2::Zero();
+  /// d ln(largest particle speed)/dt over the last 3/omega of the samples (of a run that became non-finite: before
+  /// it did), in units of omega (> 0: a growing mode). A mode's own rate is this plus the damping / 2.
+  double growth_rate = 0;
   bool finite = true;
   /// Every 20 steps: time, SPH-smoothed stress at (0, R), max particle stress, max particle speed.
   struct Sample { double t, smoothed_top, peak, vmax; };
