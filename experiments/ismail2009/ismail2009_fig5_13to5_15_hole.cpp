@@ -55,6 +55,8 @@ int main(int argc, char** argv) {
     auto hist = d.csv("history.csv", {"t", "smoothed_sigma1_hole_top", "peak_sigma1", "vmax"});
     for (const auto& h : r.history) hist.row(h.t, h.smoothed_top, h.peak, h.vmax);
     d.value("growth_rate", r.growth_rate, "d ln(largest speed)/dt over the last 3/omega, in units of omega");
+    d.value("settle_change", r.settle_change, "change of the smoothed (0, R) stress over the last 1/omega, relative");
+    d.value("rest_speed_ratio", r.rest_speed_ratio, "largest particle speed at the end over its peak during the run");
     d.value("fastest_X", r.fastest_X.x(), "reference x of the fastest particle at the last sample, m");
     d.value("fastest_Y", r.fastest_X.y(), "reference y of the fastest particle at the last sample, m");
     d.value("speed_rise", r.speed_rise, "largest particle speed at the end / its smallest after the ramp (> 1: a growing mode)");

@@ -22,7 +22,9 @@ struct HoleParams {
   double settle = 12;         ///< run on for settle / omega after the ramp (CHOSEN)
   /// Mass-proportional damping in units of omega (CHOSEN: 4). It takes damping/2 off the growth rate of the
   /// ghost-reflection closure's corner mode (1.85 omega at 81, 2.50 at 161 undamped: the resolution driver's
-  /// edge series, issue 15 b): at 2 the mode outruns it from 81 on; at 4 it still grows at 0.5 omega at 161.
+  /// edge series, issue 15 b; 2.97 at 201): at 2 the mode outruns it from 81 on; at 4 it still grows at 0.5
+  /// omega at 161 and 1.0 at 201, from round-off, too slowly to show within the study's 6/omega (the runs at
+  /// the full load come to rest: rest_speed_ratio_finest). 6 would hold it but overdamps the slowest mode.
   double damping = 4;
   bool variational = false;   ///< boundary scheme (src/total_lagrangian/body_2d.hpp): ghost reflection by default
   double hourglass = 0.0;     ///< zero-energy-mode control gamma (TlConfig2D::hourglass)
