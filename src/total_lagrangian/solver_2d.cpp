@@ -16,6 +16,7 @@ void TlSolver2D::build(const K& kernel) {
   if (!(cfg.rho > 0) || cfg.real.empty()) throw std::invalid_argument("TlSolver2D: need ps, rho > 0 and particles");
   if (cfg.conditions.empty() && !cfg.ghosts.empty()) throw std::invalid_argument("TlSolver2D: ghosts need boundary conditions");
   if (cfg.hourglass < 0) throw std::invalid_argument("TlSolver2D: hourglass >= 0");
+  if (cfg.closure_passes < 1) throw std::invalid_argument("TlSolver2D: closure_passes >= 1 (0 would leave the ghosts and the gradient unset)");
   b_.radius = kernel.radius;
   b_.nr = static_cast<int>(cfg.real.size());
   b_.ng = static_cast<int>(cfg.ghosts.size());
