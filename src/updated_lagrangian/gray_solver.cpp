@@ -103,16 +103,18 @@ GraySolver::PowerBudget GraySolver::power_budget() const {
   std::vector<Tensor2> R(o_.artificial_stress ? n : 0), A(o_.xsph ? n : 0);
   for (std::size_t a = 0; a < R.size(); ++a) R[a] = artificial_stress(stress(a), rho[a], p_.eps_artificial);
   for (std::size_t a = 0; a < A.size(); ++a) A[a] = stress(a) / (rho[a] * rho[a]);
-  // w = v - vhat, the XSPH correction (3.6) at this state (zero without XSPH).
+  // w = v - vhat = -eps_xsph (the XSPH sum (3.6)) at this state (zero without XSPH).
   std::vector<Vec2> w(o_.xsph ? n : 0, Vec2::Zero());
-  if (o_.xsph)
+  if (o_.xsph) {
     for (long a = 0; a < n; ++a)
       for (std::uint32_t k = pairs_.first(a); k < pairs_.last(a); ++k) {
         const std::uint32_t b = pairs_.b[k];
-        const Vec2 dv = (v[b] - v[a]) * (pairs_.W[k] / (0.5 * (rho[a] + rho[b])));
-        w[a] -= p_.eps_xsph * m[b] * dv;
-        w[b] += p_.eps_xsph * m[a] * dv;
+        const Vec2 t = xsph_pair_term(v[a], v[b], pairs_.W[k], rho[a], rho[b]);
+        w[a] += m[b] * t;
+        w[b] -= m[a] * t;
       }
+    for (auto& wa : w) wa *= -p_.eps_xsph;
+  }
   const double eta2 = 0.01 * h_ * h_, inv_Wdp = 1.0 / W_dp_;
   double p_art = 0, p_visc = 0, p_xsph = 0;
 #pragma omp parallel for reduction(+ : p_art, p_visc, p_xsph) schedule(static)

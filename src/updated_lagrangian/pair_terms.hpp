@@ -97,6 +97,12 @@ inline double ipow(double x, int n) {
 /// order: the same bits) instead of ipow's loop, whose branch the compiler can take out of a pair loop.
 inline double artificial_stress_fn(double f, int n) { return n == 4 ? ((f * f) * f) * f : ipow(f, n); }
 
+/// The pair's term of the XSPH sum (3.6), (v_b - v_a) W_ab / rho_ab with rho_ab = (rho_a + rho_b) / 2: a gains
+/// m_b times it, b loses m_a times it, and vhat = v + eps_xsph sum.
+inline Vec2 xsph_pair_term(const Vec2& va, const Vec2& vb, double W, double rho_a, double rho_b) {
+  return (vb - va) * (W / (0.5 * (rho_a + rho_b)));
+}
+
 /// Monaghan's viscosity Pi_ab >= 0 of an approaching pair (vr = v_ab . x_ab < 0; r2 = |x_ab|^2, eta2 = 0.01 h^2).
 inline double monaghan_pi(double vr, double r2, double h, double eta2, double alpha, double beta, double c0,
                           double rho_a, double rho_b) {
@@ -180,7 +186,7 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
         for (std::uint32_t k = row_[a], end = row_[a] + active_[a]; k < end; ++k) {
           const std::uint32_t b = nb_[k];
           if constexpr (Terms::xsph) {
-            const Vec2 w = (v_[b] - v_[a]) * (W_[k] / (0.5 * (rho_[a] + rho_[b])));
+            const Vec2 w = xsph_pair_term(v_[a], v_[b], W_[k], rho_[a], rho_[b]);
             dv_avg_a += m_[b] * w;
             dv_avg[b] -= m_[a] * w;
           }
