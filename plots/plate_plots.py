@@ -19,15 +19,20 @@ def plot_table(results, figures, target, table):
     ref = published(target)
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
     ax = axes[0]
-    for i, (mu, g) in enumerate(df.groupby("mu")):
+    # The table's own runs at the coarsest dp; Table 2's same-n reading (dp H / 2, issue 14) dashed.
+    main_dp = df.dp.max()
+    for i, (mu, g) in enumerate(df[df.dp == main_dp].groupby("mu")):
         c = f"C{i}"
         ax.plot(g.Vf, g.T_sph, "o-", color=c, label=f"SPH, $\\mu$ = {mu:g}")
         ax.axhline(g.T_theory_thin.iloc[0], color=c, ls=":", lw=0.8)
         ax.axhline(g.T_theory_reading.iloc[0], color=c, ls="--", lw=0.8)
-        pub = ref[ref.quantity.str.startswith("T_sph_") & ref.quantity.str.endswith(f"_mu{mu:g}")]
+        pub = ref[ref.quantity.str.match(r"T_sph_H\d") & ref.quantity.str.endswith(f"_mu{mu:g}")]
         if len(pub):
             vf = [float(q.split("_Vf")[1].split("_mu")[0]) for q in pub.quantity]
             ax.plot(vf, pub.published.astype(float), "x", color=c, ms=7, label=f"published, $\\mu$ = {mu:g}")
+        same_n = df[(df.dp < main_dp) & (df.mu == mu)]
+        if len(same_n):
+            ax.plot(same_n.Vf, same_n.T_sph, "s--", color=c, mfc="none", label=f"SPH at dp = {same_n.dp.iloc[0]:g}")
     ax.set_xlabel("$V_f$")
     ax.set_ylabel("period T")
     ax.set_title(f"Table {table}: SPH (o), published (x); theory: H (dotted), H-0.1 (dashed)")

@@ -14,10 +14,14 @@
 //   time step dt = cfl h / (c_L + V_f), cfl = 0.5 (the scheme's default, set from the stability sweep G-stab)
 //   run length: to the tip's first zero crossing, T = 2 t_1 (CHOSEN for run time: half the cost of a full
 //     period; --crossings 2 measures T between the first two crossings), at most --periods theory periods
+//   Table 2's same-n reading (issue 14 item 1; --same-n-reading false skips it): every Table 2 row also at
+//     dp H / 2 (0.05: 20 particles across H = 1, as Table 1 has across H = 2), written T_sph_same_n_<row>;
+//     the theory column stays H - paper_dp. Doubles the particles across and the steps: ~8x a row's cost.
 // Theory (7.1): E = 9 K mu / (3K + mu), nu = (3K - 2 mu) / (2 (3K + mu)), K = rho0 c0^2, plane strain
 //   1 - nu^2 -- the convention that reproduces the published theory column (reference/G-tab1.csv).
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "frame/driver.hpp"
@@ -59,6 +63,7 @@ int main(int argc, char** argv) {
   int table = 0;
   long max_steps = -1;
   int crossings = 1;
+  bool same_n = true;
   d.param("crossings", crossings, "stop each run at this zero crossing of the tip (2: one period; 1: half, T = 2 t_1)").positive();
   d.param("dp", dp, "particle spacing (H/dp must be an integer)").positive();
   d.param("clamp-length", clamp, "plate length held between the fixed layers").non_negative();
@@ -68,6 +73,7 @@ int main(int argc, char** argv) {
   d.param("periods", periods, "longest run in theoretical periods (each run stops at its second zero crossing)").positive();
   d.param("table", table, "1 or 2 for one table only, 0 for both").at_least(0).at_most(2);
   d.param("paper-dp", paper_dp, "the spacing of the paper's runs, used only by the theory reading H - dp").positive();
+  d.param("same-n-reading", same_n, "Table 2 also at Table 1's particles across the thickness (dp H / 2), the reading of issue 14");
   d.param("max-steps", max_steps, "stop each run after this many steps (smoke test); -1 = no limit");
   std::vector<std::string> only, row_names;
   for (const Row& r : kRows) row_names.push_back(key(r));
@@ -93,23 +99,20 @@ int main(int argc, char** argv) {
           d.value("T_theory_eq2.8_" + theory_key(H, mu).substr(9), scenes::plate_theory_period(2 * mu * (1 + nu), nu, H - paper_dp, 20.0, 1.0),
                   "(7.1) with thickness H - paper_dp, nu from (2.8) as printed, E = 2 mu (1 + nu)");
         }
-    auto periods_csv = d.csv("periods.csv", {"table", "H", "Vf", "mu", "particles", "dt", "steps", "wall_s", "T_sph",
-                                             "T_theory_thin", "T_theory_reading", "error_vs_theory", "tip_amplitude",
-                                             "fragments"});
-    double max_err[3] = {0, 0, 0}, sum_err[3] = {0, 0, 0};
-    int count[3] = {0, 0, 0};
-    for (const Row& row : kRows) {
-      if (table != 0 && row.table != table) continue;
-      if (!only.empty() && std::find(only.begin(), only.end(), key(row)) == only.end()) continue;
-      // --quick: one row per table (mu = 0.6, Vf = 0.01, the shortest periods) at a coarser spacing.
-      if (d.quick() && !(row.mu == 0.6 && row.Vf == 0.01)) continue;
+    auto periods_csv = d.csv("periods.csv", {"table", "H", "Vf", "mu", "dp", "particles", "dt", "steps", "wall_s",
+                                             "T_sph", "T_theory_thin", "T_theory_reading", "error_vs_theory",
+                                             "tip_amplitude", "fragments"});
+    struct Errors { double max = 0, sum = 0; int count = 0; };
+    std::map<std::string, Errors> errors;  // by the suffix of the error values: "table1", "table2", "table2_same_n"
+    // One run of a row at spacing `spacing`; `tag` names its outputs ("" for the table's own runs).
+    auto run_row = [&](const Row& row, double spacing, const std::string& tag) {
       const double E = sph::young_from_bulk_shear(K, row.mu), nu = sph::poisson_ratio_from_bulk_shear(K, row.mu);
       const double T_thin = scenes::plate_theory_period(E, nu, row.H, 20.0, 1.0);
       const double T_reading = scenes::plate_theory_period(E, nu, row.H - paper_dp, 20.0, 1.0);
       scenes::PlateRunSpec s;
       s.plate.L = 20.0;
       s.plate.H = row.H;
-      s.plate.dp = dp;
+      s.plate.dp = spacing;
       s.plate.clamp_length = clamp;
       s.plate.Vf = row.Vf;
       s.scheme = scheme;
@@ -119,28 +122,42 @@ int main(int argc, char** argv) {
       s.max_steps = max_steps;
       s.sample_dt = 0.5;
       s.fracture_check_dt = 50.0;
-      const auto res = scenes::run_plate(s, {}, "plate " + key(row));
-      if (!res.blow_up.empty()) throw std::runtime_error(key(row) + ": " + res.blow_up);
+      const std::string name = tag.empty() ? key(row) : tag + "_" + key(row);
+      const auto res = scenes::run_plate(s, {}, "plate " + name);
+      if (!res.blow_up.empty()) throw std::runtime_error(name + ": " + res.blow_up);
       const double T = scenes::period_from_crossings(scenes::zero_crossings(res.trace));
       const auto ext = scenes::half_cycle_extremes(res.trace);
       const double amp = ext.empty() ? NAN : std::abs(ext.front());
-      const double err = T / T_reading - 1.0;  // against the theory column, as the paper's "error" 
+      const double err = T / T_reading - 1.0;  // against the theory column, as the paper's "error"
       const std::size_t pieces = res.trace.back().fragments;
-      periods_csv.row(row.table, row.H, row.Vf, row.mu, res.particles, res.dt, res.steps, res.wall_s, T, T_thin,
-                      T_reading, err, amp, pieces);
-      auto trace = d.csv("tip_" + key(row) + ".csv", {"t", "y_tip", "kinetic", "elastic"});
+      periods_csv.row(row.table, row.H, row.Vf, row.mu, spacing, res.particles, res.dt, res.steps, res.wall_s, T,
+                      T_thin, T_reading, err, amp, pieces);
+      auto trace = d.csv("tip_" + name + ".csv", {"t", "y_tip", "kinetic", "elastic"});
       for (const auto& smp : res.trace) trace.row(smp.t, smp.y, smp.ke, smp.ee);
-      if (max_steps >= 0) continue;  // a smoke run measures nothing
-      d.value("T_sph_" + key(row), T, "period from the tip's zero crossings");
-      max_err[row.table] = std::max(max_err[row.table], std::abs(err));
-      sum_err[row.table] += std::abs(err);
-      ++count[row.table];
-      d.value("fragments_" + key(row), static_cast<double>(pieces), "pieces of the plate at the end (1 = intact)");
+      if (max_steps >= 0) return;  // a smoke run measures nothing
+      const std::string prefix = tag.empty() ? "" : tag + "_";
+      d.value("T_sph_" + prefix + key(row), T, tag.empty() ? "period from the tip's zero crossings"
+              : "period from the tip's zero crossings, at Table 1's particles across the thickness (dp H / 2)");
+      Errors& e = errors["table" + std::to_string(row.table) + (tag.empty() ? "" : "_" + tag)];
+      e.max = std::max(e.max, std::abs(err));
+      e.sum += std::abs(err);
+      ++e.count;
+      if (tag.empty())
+        d.value("fragments_" + key(row), static_cast<double>(pieces), "pieces of the plate at the end (1 = intact)");
+    };
+    for (const Row& row : kRows) {
+      if (table != 0 && row.table != table) continue;
+      if (!only.empty() && std::find(only.begin(), only.end(), key(row)) == only.end()) continue;
+      // --quick: one row per table (mu = 0.6, Vf = 0.01, the shortest periods) at a coarser spacing.
+      if (d.quick() && !(row.mu == 0.6 && row.Vf == 0.01)) continue;
+      run_row(row, dp, "");
+      // The reading of issue 14 item 1: Table 2 run with as many particles across H = 1 as Table 1 has
+      // across H = 2, its theory column unchanged (H - paper_dp).
+      if (same_n && row.table == 2) run_row(row, dp * row.H / 2.0, "same_n");
     }
-    for (int t : {1, 2})
-      if (count[t] > 0) {
-        d.value("max_error_vs_theory_table" + std::to_string(t), max_err[t], "max |T_sph / T_theory(H - paper_dp) - 1|, the paper's error against its theory column");
-        d.value("mean_error_vs_theory_table" + std::to_string(t), sum_err[t] / count[t], "mean |T_sph / T_theory(H - paper_dp) - 1|");
-      }
+    for (const auto& [suffix, e] : errors) {
+      d.value("max_error_vs_theory_" + suffix, e.max, "max |T_sph / T_theory(H - paper_dp) - 1|, the paper's error against its theory column");
+      d.value("mean_error_vs_theory_" + suffix, e.sum / e.count, "mean |T_sph / T_theory(H - paper_dp) - 1|");
+    }
   });
 }
