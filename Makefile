@@ -28,7 +28,7 @@ include experiments/targets.mk
 # The order in which `figures` starts the targets, NCORES at a time: the longest first (their single-threaded
 # run times at the default resolution, measured; a longest-processing-time-first schedule), then the rest in
 # the order of targets.mk. Only the order changes, never what runs. (G-tab2 first since its same-n reading: ~8x its
-# dp = 0.1 rows, measured on one core of the AMD host on 2026-12-02: ~2300 s against ~330 s.)
+# dp = 0.1 rows, measured on one core of the AMD host on 2026-12-02: ~3200 s of CPU against ~330 s.)
 LONGEST_FIRST := G-tab2 G-fig8 G-fig2 I-hole G-tab1 G-fig4 G-fig5 H-72 G-stab G-wp G-stab-rs
 ORDERED = $(filter $(TARGETS),$(LONGEST_FIRST)) $(filter-out $(LONGEST_FIRST),$(TARGETS))
 DONE    = $(foreach t,$(ORDERED),$(RESULTS)/$(t)/.done)
