@@ -21,12 +21,15 @@ def cell(x, fmt):
 rows = []
 for _, r in df.iterrows():
     rows.append([r.variant,
-                 "broken" if r.plate_broken else cell(100 * r.plate_period_error, "{:+.1f}%"),
+                 "broken" if r.plate_broken else  # a signed error: cell() would hide a negative one
+                 ("-" if not np.isfinite(r.plate_period_error) else f"{100 * r.plate_period_error:+.1f}%"),
+                 # NaN: not applicable (the total-Lagrangian row: no contact, no fracture)
+                 "n/a" if not np.isfinite(r.rings_fragments) else
                  f"{int(r.rings_fragments)}" + (" (intact)" if r.rings_fragments == 1 else " (broken)"),
                  cell(r.rings_restitution, "{:.2f}"),
                  cell(r.slab_clumping_time, "{:.0f}"),
                  cell(r.slab_fracture_time, "{:.0f}"),
-                 f"{r.plate_wall_s:.0f} / {r.rings_wall_s:.0f} / {r.slab_wall_s:.0f}"])
+                 " / ".join(cell(t, "{:.0f}") for t in (r.plate_wall_s, r.rings_wall_s, r.slab_wall_s))])
 cols = ["variant", "plate: T / T_thin - 1", "rings: fragments", "rings: restitution", "slab: clumping t",
         "slab: ends part t", "wall s (plate / rings / slab)"]
 fig, axes = plt.subplots(2, 1, figsize=(10, 4.6), gridspec_kw={"height_ratios": [1.1, 1.4]})

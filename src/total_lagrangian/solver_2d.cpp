@@ -81,6 +81,14 @@ void TlSolver2D::set_initial_displacement(const std::function<Vec2(const Vec2&)>
   }
 }
 
+void TlSolver2D::set_initial_velocity(const std::function<Vec2(const Vec2&)>& v0, double dt) {
+  if (!(dt > 0)) throw std::invalid_argument("TlSolver2D::set_initial_velocity: need dt > 0");
+  for (int i = 0; i < b_.nr; ++i) {
+    const Vec2 v = v0(b_.all[i]);
+    for (int c = 0; c < 2; ++c) b_.up[c][i] = b_.u[c][i] - dt * v[c];
+  }
+}
+
 void TlSolver2D::step(double dt) {
   stepper_->step(b_, dt);
   check_state();

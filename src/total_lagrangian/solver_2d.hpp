@@ -34,6 +34,9 @@ class TlSolver2D {
 
   /// u_0 = u_{-1} = u0(X) on the real particles.
   void set_initial_displacement(const std::function<Vec2(const Vec2&)>& u0);
+  /// u_{-1} = u_0 - dt v0(X) on the real particles, so that the central difference starts at velocity v0: exact
+  /// to O(dt^3) where the initial acceleration is zero (an unstressed body). dt must be the first step's.
+  void set_initial_velocity(const std::function<Vec2(const Vec2&)>& v0, double dt);
   /// One step; throws BlowUp when a displacement or stress of a real particle is no longer finite.
   void step(double dt);
   double time() const { return b_.t; }
