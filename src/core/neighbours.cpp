@@ -43,6 +43,8 @@ void CellList2D::build(const std::vector<Vec2>& x) {
   for (std::size_t i = 0; i < n; ++i) sorted_[cell_start_[cell_of_[i]]++] = i;
   for (std::size_t c = cell_start_.size() - 1; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
   cell_start_[0] = 0;
+  x_sorted_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) x_sorted_[k] = x[sorted_[k]];
 }
 
 void CellList2D::throw_radius_too_large(double radius) const {

@@ -6,6 +6,7 @@
 // search radius to be at most half the period (checked).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -71,24 +72,30 @@ class CellList2D {
     });
   }
 
-  /// Appends to `out` the same particles j, in the same order, as for_each_neighbour visits, those with
-  /// keep(j); without a branch per candidate: about a third of the 3 x 3 cells' particles are within the
-  /// radius, so the branches of for_each_neighbour are mispredicted often (the pair lists' collection).
-  /// sqrt(r2) < radius, the test for_each_neighbour makes, is r2 <= the largest double whose correctly
-  /// rounded square root is below the radius (sqrt is monotonic), found once per call.
-  template <class Keep>
+  /// Appends to `out` the same particles j, in the same order, as for_each_neighbour visits, all of them or
+  /// (upper_only) those with j > i; without a branch per candidate: about a third of the 3 x 3 cells'
+  /// particles are within the radius, so the branches of for_each_neighbour are mispredicted often (the pair
+  /// lists' collection). sqrt(r2) < radius, the test for_each_neighbour makes, is r2 <= the largest double
+  /// whose correctly rounded square root is below the radius (sqrt is monotonic), found once per call.
+  /// A cell's particles are in ascending index order (build's stable sort), so with upper_only the scan of a
+  /// cell starts at its first particle above i (half the distance tests); and the positions are read from
+  /// build's copy in cell order, contiguous, instead of through the index. `x` must be the positions of the
+  /// last build (the cells would be stale otherwise).
   void append_neighbours(const std::vector<Vec2>& x, std::size_t i, double radius, std::vector<std::uint32_t>& out,
-                         Keep&& keep) const {
+                         bool upper_only) const {
     const double r2_last = largest_r2_below(checked_radius2(radius), radius);
     const MinimumImage displacement = minimum_image();
     const Vec2 xi = x[i];
+    const std::size_t* sorted = sorted_.data();
+    const Vec2* xs = x_sorted_.data();
     for_each_stencil_cell(xi, [&](std::size_t k0, std::size_t k1) {
+      if (upper_only) k0 = std::upper_bound(sorted + k0, sorted + k1, i) - sorted;
       std::size_t m = out.size();
       out.resize(m + (k1 - k0));
       std::uint32_t* o = out.data();
       for (std::size_t k = k0; k < k1; ++k) {
-        const std::size_t j = sorted_[k];
-        const bool in = (j != i) & (displacement(xi, x[j]).squaredNorm() <= r2_last) & keep(j);
+        const std::size_t j = sorted[k];
+        const bool in = (j != i) & (displacement(xi, xs[k]).squaredNorm() <= r2_last);
         o[m] = static_cast<std::uint32_t>(j);
         m += in;
       }
@@ -149,6 +156,7 @@ class CellList2D {
   double radius_;
   int nx_ = 1, ny_ = 1, span_x_ = 1, span_y_ = 1;
   std::vector<std::size_t> cell_start_, sorted_, cell_of_;
+  std::vector<Vec2> x_sorted_;  ///< x[sorted_[k]]: the positions of the last build in cell order (append_neighbours)
 };
 
 /// All pairs (i, j != i) within `radius` by direct O(N^2) search: the reference the cell list is
