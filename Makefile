@@ -2,7 +2,7 @@
 #   make figures   deps -> build -> every driver -> plots -> check against published numbers
 #   make test      declaration check -> deps -> build -> GoogleTest (ctest) -> quick smoke run of every driver
 #                  -> quick check -> the report on the quick results
-# Other targets: make check, make paper, make bench, make bench-peer, make sanitize, make deps, make clean, make check-targets,
+# Other targets: make check, make paper, make bench, make bench-ab BASE=<rev>, make bench-peer, make sanitize, make deps, make clean, make check-targets,
 # make list-targets.
 # Make's dependency graph reruns a driver only when its binary changed. Threads: `figures` and `quick` run
 # NCORES drivers at a time, each single-threaded (OpenMP teams of two on 2 cores reach 1.3-1.8x, two
@@ -34,7 +34,7 @@ ORDERED = $(filter $(TARGETS),$(LONGEST_FIRST)) $(filter-out $(LONGEST_FIRST),$(
 DONE    = $(foreach t,$(ORDERED),$(RESULTS)/$(t)/.done)
 FIGS    = $(foreach t,$(ORDERED),$(FIGURES)/$(t).png)
 
-.PHONY: all figures test sanitize check paper bench bench-peer deps build build-drivers configure ctest results plots quick clean help timings \
+.PHONY: all figures test sanitize check paper bench bench-ab bench-peer deps build build-drivers configure ctest results plots quick clean help timings \
         check-targets list-targets
 .DEFAULT_GOAL := help
 
@@ -155,6 +155,21 @@ bench: deps build
 	@awk '/^#/ {next} { if (seen[FILENAME]++ == 0 && hdr++ > 0) next; print }' \
 	  $(foreach b,$(BENCH_DRIVERS),results/bench/$(b).csv) /dev/null > results/bench.csv
 	@echo "make bench: results/bench.csv"; column -s, -t < results/bench.csv || cat results/bench.csv
+
+# A speed-up against another revision, measured in one sitting (tools/bench_ab.py): the scene benchmarks of
+# BASE (built in a clone under /tmp/bench_ab) and of this checkout, alternated AB_ROUNDS times; writes
+# results/bench_ab.csv with the medians of both and their ratio. Throughputs of different sittings do not
+# compare on this shared machine. E.g. make bench-ab BASE=fc0635a AB_ARGS='bench_gray_scenes=--scenes rings'
+BASE       ?=
+AB_ROUNDS  ?= 3
+AB_BENCHES ?= bench_gray_scenes,bench_hexagon
+AB_ARGS    ?=
+comma := ,
+bench-ab: deps configure
+	@[ -n "$(BASE)" ] || { echo "make bench-ab: give the revision to compare against, BASE=<rev>"; exit 2; }
+	cmake --build $(BUILD) -j $(JOBS) --target $(subst $(comma), ,$(AB_BENCHES))
+	$(PY) tools/bench_ab.py --base $(BASE) --rounds $(AB_ROUNDS) --benches $(AB_BENCHES) \
+	  $(if $(AB_ARGS),--args '$(AB_ARGS)')
 
 # PySPH on its own rings example (Debian python3-pysph; its Depends bring cython3, build-essential and
 # python3-all-dev, which it needs to compile its kernels at the first run) against our rings of the same
