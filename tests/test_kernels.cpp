@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
 
 #include "core/kernels.hpp"
 
@@ -123,3 +126,40 @@ TEST(KernelShapes, DwOverQIsTheClosedFormOfTheQuotient) {
   check(sph::CubicSplineShape{}, 3.0);
   check(sph::LucyShape{}, 12.0);
 }
+
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+// The eight-wide forms that PairList::refresh uses on AVX-512 (kernels.hpp) give the scalar forms' bits, at
+// random distances across the support and its edge and at the branch points q = 0, 1, 2 exactly: the
+// refresh must not change a result (the quick values of every driver are bit-identical, see the notes of
+// the commit that introduced it). A compiler that fused the scalar forms differently would fail here.
+template <class K>
+void expect_eight_wide_equals_scalar(const K& kernel, double h) {
+  const auto g = kernel.at(h);
+  static_assert(decltype(g)::batch8, "the kernel has an eight-wide form");
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.1 * K::support() * h);
+  std::vector<double> r;
+  for (double q : {0.0, 0.5, 1.0, 1.5, 2.0, 2.5}) r.push_back(q * h);
+  r.push_back(std::nextafter(h, 0.0));
+  r.push_back(std::nextafter(K::support() * h, 0.0));
+  while (r.size() < 80000) r.push_back(u(rng));
+  for (std::size_t i = 0; i < r.size(); i += 8) {
+    double W8[8], F8[8];
+    __m512d W, F;
+    g(_mm512_loadu_pd(&r[i]), W, F);
+    _mm512_storeu_pd(W8, W);
+    _mm512_storeu_pd(F8, F);
+    for (int l = 0; l < 8; ++l) {
+      double Ws, Fs;
+      g(r[i + l], Ws, Fs);
+      ASSERT_EQ(std::memcmp(&Ws, &W8[l], sizeof Ws), 0) << K::name() << " W at r/h = " << r[i + l] / h;
+      ASSERT_EQ(std::memcmp(&Fs, &F8[l], sizeof Fs), 0) << K::name() << " F at r/h = " << r[i + l] / h;
+    }
+  }
+}
+
+TEST(KernelConstants, EightWideFormsGiveTheScalarBits) {
+  expect_eight_wide_equals_scalar(sph::CubicSpline(2), 0.15);
+  expect_eight_wide_equals_scalar(sph::Lucy(2), 3.0);
+}
+#endif

@@ -11,8 +11,12 @@
 
 #include <cmath>
 #include <stdexcept>
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+#include <immintrin.h>
+#endif
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace sph {
@@ -51,6 +55,25 @@ struct CubicSplineShape {
     if (q < 2.0) return 1.5 * (2.0 - q);
     return 0.0;
   }
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+  /// w(q) and dw_over_q(q) for eight q at once, the same bits as the scalar forms: the same operations in
+  /// the same order, with a multiply and an add fused exactly where GCC fuses them in the scalar forms
+  /// (-ffp-contract=fast; tests/test_kernels.cpp compares the two bit for bit).
+  static void w_and_dw_over_q8(__m512d q, __m512d& w, __m512d& dw_over_q) {
+    const __mmask8 inner = _mm512_cmp_pd_mask(q, _mm512_set1_pd(1.0), _CMP_LT_OQ);
+    const __mmask8 outer = _mm512_cmp_pd_mask(q, _mm512_set1_pd(2.0), _CMP_LT_OQ) & ~inner;
+    // q < 1: 1 - 1.5 q q + 0.75 q q q and -3 + 2.25 q
+    const __m512d w1 = _mm512_fmadd_pd(_mm512_mul_pd(_mm512_mul_pd(q, _mm512_set1_pd(0.75)), q), q,
+                                       _mm512_fnmadd_pd(_mm512_mul_pd(q, _mm512_set1_pd(1.5)), q, _mm512_set1_pd(1.0)));
+    const __m512d d1 = _mm512_fmadd_pd(q, _mm512_set1_pd(2.25), _mm512_set1_pd(-3.0));
+    // 1 <= q < 2: t = 2 - q, 0.25 t t t and -0.75 t t / q
+    const __m512d t = _mm512_sub_pd(_mm512_set1_pd(2.0), q);
+    const __m512d w2 = _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(t, _mm512_set1_pd(0.25)), t), t);
+    const __m512d d2 = _mm512_maskz_div_pd(outer, _mm512_mul_pd(_mm512_mul_pd(t, _mm512_set1_pd(-0.75)), t), q);
+    w = _mm512_mask_blend_pd(inner, _mm512_maskz_mov_pd(outer, w2), w1);  // beyond: +0, as the scalar 0.0
+    dw_over_q = _mm512_mask_blend_pd(inner, d2, d1);
+  }
+#endif
   static double normalisation(int dim);
 };
 
@@ -78,6 +101,17 @@ struct LucyShape {
     if (q >= 1.0) return 0.0;
     return -12.0 * (1.0 - q) * (1.0 - 3.0 * q);
   }
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+  /// w(q) and dw_over_q(q) for eight q at once, the same bits as the scalar forms (see CubicSplineShape):
+  /// 1 + 3q fused as GCC fuses it.
+  static void w_and_dw_over_q8(__m512d q, __m512d& w, __m512d& dw_over_q) {
+    const __mmask8 inside = _mm512_cmp_pd_mask(q, _mm512_set1_pd(1.0), _CMP_LT_OQ);
+    const __m512d t = _mm512_sub_pd(_mm512_set1_pd(1.0), q);
+    const __m512d a = _mm512_fmadd_pd(q, _mm512_set1_pd(3.0), _mm512_set1_pd(1.0));
+    w = _mm512_maskz_mov_pd(inside, _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(a, t), t), t));
+    dw_over_q = _mm512_maskz_mov_pd(inside, _mm512_mul_pd(_mm512_mul_pd(t, _mm512_set1_pd(-12.0)), t));
+  }
+#endif
   static double normalisation(int dim);
 };
 
@@ -200,6 +234,12 @@ class Kernel {
   struct has_dw_over_q : std::false_type {};
   template <class S>
   struct has_dw_over_q<S, std::void_t<decltype(S::dw_over_q(0.0))>> : std::true_type {};
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+  template <class S, class = void>
+  struct has_w_and_dw_over_q8 : std::false_type {};
+  template <class S>
+  struct has_w_and_dw_over_q8<S, std::void_t<decltype(S::w_and_dw_over_q8(std::declval<__m512d>(), std::declval<__m512d&>(), std::declval<__m512d&>()))>> : std::true_type {};
+#endif
   /// W and F together at one smoothing length, its constants (1/h, sigma/h^dim, sigma/h^(dim+2)) computed
   /// once: the pair-list refreshes call it for every candidate pair.
   struct AtH {
@@ -209,6 +249,16 @@ class Kernel {
       W = c * Shape::w(q);
       F = cF * quotient(q);
     }
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+    /// The same for eight distances at once, bit for bit, where the shape has an eight-wide form (batch8).
+    static constexpr bool batch8 = has_w_and_dw_over_q8<Shape>::value;
+    void operator()(__m512d r, __m512d& W, __m512d& F) const {
+      __m512d w, d;
+      Shape::w_and_dw_over_q8(_mm512_mul_pd(r, _mm512_set1_pd(inv_h)), w, d);
+      W = _mm512_mul_pd(_mm512_set1_pd(c), w);
+      F = _mm512_mul_pd(_mm512_set1_pd(cF), d);
+    }
+#endif
   };
   /// dw(q)/q: the shape's closed form if it has one, else the quotient (its limit d2w(0) at q -> 0).
   static double quotient(double q) {
