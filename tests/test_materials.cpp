@@ -251,7 +251,9 @@ TEST(Hooke, ShearEnergyRateIsTheStressPower) {
     const double power = (S.array() * eps_dot.array()).sum();
     EXPECT_NEAR(dU, power, 1e-8) << "trial " << trial;
     const double in_plane_only = (S.array() * rate.array()).sum() / (2 * mu);
-    if (std::abs(S.trace() * eps_dot.trace()) > 0.1) EXPECT_GT(std::abs(in_plane_only - power), 1e-3);
+    if (std::abs(S.trace() * eps_dot.trace()) > 0.1) {
+      EXPECT_GT(std::abs(in_plane_only - power), 1e-3);
+    }
   }
 }
 
