@@ -30,11 +30,13 @@ struct BlowUp : std::runtime_error {
   throw BlowUp(msg.str(), step, time, particle);
 }
 
-/// The first index i < n for which bad(i) holds, or n; a parallel reduction for large n.
+/// The first index i < n for which bad(i) holds, or n; a parallel reduction from parallel_from particles (a
+/// caller whose other per-step loops stay serial longer passes its own threshold: the fork and join of a
+/// region would otherwise be most of a cheap check).
 template <class Bad>
-std::size_t first_bad_particle(std::size_t n, Bad&& bad) {
+std::size_t first_bad_particle(std::size_t n, Bad&& bad, long parallel_from = kParallelMin) {
   std::size_t first = n;
-#pragma omp parallel for reduction(min : first) schedule(static) if (static_cast<long>(n) >= kParallelMin)
+#pragma omp parallel for reduction(min : first) schedule(static) if (static_cast<long>(n) >= parallel_from)
   for (std::size_t a = 0; a < n; ++a)
     if (bad(a)) first = std::min(first, a);
   return first;

@@ -80,7 +80,7 @@ void spmv(const SparseMatrix& A, const Eigen::VectorXd& v, Eigen::VectorXd& y) {
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
   const double* val = A.valuePtr();
-#pragma omp parallel for schedule(static) if (n > 50000)  // below this the fork/join costs more than the rows
+#pragma omp parallel for schedule(static) if (n > kParallelRows1D)
   for (int p = 0; p < n; ++p) {
     double s = 0.0;
     for (int k = outer[p]; k < outer[p + 1]; ++k) s += val[k] * v[inner[k]];

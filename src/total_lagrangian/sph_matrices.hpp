@@ -58,6 +58,9 @@ void update_sph_matrices_1d(SphMatrices1D& m, const KernelFn& k, const std::vect
 template <class K>
 SphMatrices2D build_sph_matrices_2d(const K& k, const std::vector<Vec2>& x, const std::vector<double>& dV);
 
+/// Rows from which spmv runs in parallel: a 1D row holds a few entries, so below this the fork and join cost
+/// more than the rows (the 1D solver's other per-step loops use it too).
+inline constexpr long kParallelRows1D = 50000;
 /// y = A v, rows in parallel (OpenMP); y must already have A.rows() entries (no allocation).
 void spmv(const SparseMatrix& A, const Eigen::VectorXd& v, Eigen::VectorXd& y);
 
