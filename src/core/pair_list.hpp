@@ -123,14 +123,6 @@ struct PairList {
     const double support2 = support_radius * support_radius;
     const auto displacement = cells.minimum_image();
     const std::decay_t<Geometry> g = geometry;  // by value: in registers, like the pointers below (see MinimumImage)
-    const std::uint32_t* __restrict start_ = start.data();
-    const std::uint32_t* __restrict cand_ = cand.data();
-    const Vec2* __restrict x_ = x.data();
-    std::uint32_t* __restrict b_ = b.data();
-    Vec2* __restrict dx_ = dx.data();
-    double* __restrict W_ = W.data();
-    double* __restrict F_ = F.data();
-    std::uint32_t* __restrict active_ = active.data();
 #if defined(__AVX512F__) && defined(__AVX512VL__)
     if constexpr (batch8_of<std::decay_t<Geometry>>::value) {
       if (!displacement.periodic_x && !displacement.periodic_y) {
@@ -139,6 +131,14 @@ struct PairList {
       }
     }
 #endif
+    const std::uint32_t* __restrict start_ = start.data();
+    const std::uint32_t* __restrict cand_ = cand.data();
+    const Vec2* __restrict x_ = x.data();
+    std::uint32_t* __restrict b_ = b.data();
+    Vec2* __restrict dx_ = dx.data();
+    double* __restrict W_ = W.data();
+    double* __restrict F_ = F.data();
+    std::uint32_t* __restrict active_ = active.data();
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long a = 0; a < n; ++a) {
       std::uint32_t j = start_[a];
