@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <cstring>
 #include <random>
+#include <typeinfo>
 
 #include "updated_lagrangian/artificial_stress.hpp"
 #include "updated_lagrangian/gray_solver.hpp"
 #include "core/diagnostics.hpp"
+#include "core/fields.hpp"
 #include "core/materials.hpp"
 
 namespace {
@@ -358,6 +361,68 @@ TEST(GraySolver, PlasticReturnKeepsEveryStressOnOrInsideTheYieldSurface) {
     EXPECT_EQ(a.x[k], b.x[k]);
     EXPECT_EQ(a.S[k], b.S[k]);
   }
+}
+
+// The eight-wide pass 2 (pair_terms_wide.hpp, AVX-512) against the scalar loop, bit for bit, for every
+// combination of terms: the same pairs, the same operations, the same order of every sum. Rows of every
+// length occur (a disordered block: 0 to ~14 pairs per row, so full, partial and empty eight-pair blocks),
+// and n = 4 and n = 3 for f^n.
+template <class Terms>
+void expect_wide_pass2_matches_scalar(int nart) {
+#if SPH_WIDE_PASS2
+  const double dp = 0.1;
+  sph::ElasticBody body = random_block(23, dp, 11, true);
+  sph::GrayParameters p = params_for(body, dp, {-1, -1, 3, 3, false, false});
+  p.n_artificial = nart;
+  const sph::CubicSpline kernel(2);
+  const double h = p.h_over_dp * dp, W_dp = kernel.W(dp, h);
+  sph::CellList2D cells(body.box, kernel.support() * h + p.skin_over_h * h);
+  sph::PairList pairs;
+  pairs.half = true;
+  pairs.update(cells, body.x, kernel.support() * h, p.skin_over_h * h, kernel.at(h));
+  auto rates_of = [&](auto evaluate, sph::ElasticBody& b) {
+    sph::GrayScratch scratch;
+    scratch.sigma_over_rho2.assign(b.size(), Tensor2::Zero());
+    scratch.volume.assign(b.size(), 0.0);
+    scratch.R.assign(b.size(), Tensor2::Zero());
+    sph::GrayRates r;
+    sph::resize_fields(r, b.size());
+    evaluate(b, p, kernel, h, W_dp, pairs, scratch, r);
+    return r;
+  };
+  sph::ElasticBody b_scalar = body, b_wide = body;
+  const sph::GrayRates scalar = rates_of(&sph::evaluate_gray_rates<Terms, false>, b_scalar);
+  const sph::GrayRates wide = rates_of(&sph::evaluate_gray_rates<Terms, true>, b_wide);
+  auto same_bits = [](const auto& u, const auto& w) {
+    return u.size() == w.size() && std::memcmp(u.data(), w.data(), u.size() * sizeof(u[0])) == 0;
+  };
+  const char* terms = typeid(Terms).name();
+  EXPECT_TRUE(same_bits(scalar.dv, wide.dv)) << terms << " n = " << nart;
+  EXPECT_TRUE(same_bits(scalar.drho, wide.drho)) << terms;
+  EXPECT_TRUE(same_bits(scalar.dS, wide.dS)) << terms;
+  EXPECT_TRUE(same_bits(scalar.dx, wide.dx)) << terms;
+  EXPECT_TRUE(same_bits(b_scalar.rho, b_wide.rho)) << terms;
+  double largest = 0;  // the forces are not trivially zero
+  for (const Vec2& a : wide.dv) largest = std::max(largest, a.norm());
+  EXPECT_GT(largest, 1e-3) << terms;
+#else
+  (void)nart;
+  GTEST_SKIP() << "no AVX-512: the scalar pass 2 is the only one";
+#endif
+}
+
+TEST(GraySolver, WidePassTwoGivesTheScalarBitsForEveryTerm) {
+  using sph::GrayTerms;
+  for (int nart : {4, 3}) {
+    expect_wide_pass2_matches_scalar<GrayTerms<true, true, true, false>>(nart);
+    expect_wide_pass2_matches_scalar<GrayTerms<true, true, true, true>>(nart);
+    expect_wide_pass2_matches_scalar<GrayTerms<true, false, true, false>>(nart);
+    expect_wide_pass2_matches_scalar<GrayTerms<true, false, false, true>>(nart);
+  }
+  expect_wide_pass2_matches_scalar<GrayTerms<false, true, true, false>>(4);
+  expect_wide_pass2_matches_scalar<GrayTerms<false, false, false, false>>(4);
+  expect_wide_pass2_matches_scalar<GrayTerms<false, true, false, true>>(4);
+  expect_wide_pass2_matches_scalar<GrayTerms<false, false, true, true>>(4);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include "core/parallel.hpp"
 #include "updated_lagrangian/artificial_stress.hpp"
 #include "updated_lagrangian/elastic_body.hpp"
+#include "updated_lagrangian/pair_terms_wide.hpp"
 #include "updated_lagrangian/parameters.hpp"
 
 namespace sph {
@@ -71,18 +72,19 @@ struct GrayScratch {
   std::vector<Tensor2> sigma_over_rho2, R;  ///< R only with the artificial stress
   std::vector<double> volume;               ///< m / rho
   struct Partial {
-    std::vector<Vec2> dv_avg, acc;          ///< XSPH sum, acceleration sum
-    std::vector<double> rho_sum, drho;      ///< summation density, continuity sum
-    std::vector<Tensor2> grad_v;            ///< velocity gradient sum
+    std::vector<Vec2> dv_avg;               ///< XSPH sum
+    std::vector<double> rho_sum;            ///< summation density
+    std::vector<PairSums> sums;             ///< pass 2: acceleration, continuity and velocity gradient sums
     std::size_t lo = 0, hi = 0;             ///< the particles this thread's pairs touch: [lo, hi)
   };
   std::vector<Partial> partial;             ///< one per thread
   void size_for(std::size_t n, int threads) {
     if (partial.size() < static_cast<std::size_t>(threads)) partial.resize(threads);
     for (auto& q : partial)
-      if (q.acc.size() != n) {
-        q.dv_avg.assign(n, Vec2::Zero()); q.acc.assign(n, Vec2::Zero());
-        q.rho_sum.assign(n, 0.0); q.drho.assign(n, 0.0); q.grad_v.assign(n, Tensor2::Zero());
+      if (q.sums.size() != n) {
+        q.dv_avg.assign(n, Vec2::Zero());
+        q.rho_sum.assign(n, 0.0);
+        q.sums.assign(n, PairSums{});
       }
   }
 };
@@ -114,9 +116,10 @@ inline double monaghan_pi(double vr, double r2, double h, double eta2, double al
 /// h = h_over_dp dp, W_dp = W(dp, h) (the normalisation of f = W / W(dp)). `pairs` holds every pair once
 /// (PairList::half): b > a in a's row. One parallel region: pass 1, the per-particle terms, pass 2 and the
 /// sums of the threads' partials, separated by barriers.
-template <class Terms>
+template <class Terms, bool Wide = SPH_WIDE_PASS2 != 0>
 void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const CubicSpline& kernel, double h, double W_dp,
                          const PairList& pairs, GrayScratch& scratch, GrayRates& out) {
+  static_assert(!Wide || SPH_WIDE_PASS2, "the eight-wide pass 2 needs AVX-512 (F and VL)");
   const std::size_t n = body.size();
   const auto& v = body.v;
   const auto& m = body.m;
@@ -217,87 +220,90 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
 
     // Pass 2: acceleration (3.1)/(3.12), continuity (3.8), velocity gradient (3.10), each pair once: with
     // gW = grad_a W_ab = -grad_b W_ba and the symmetric M_ab, the pair adds m_b M gW to a and -m_a M gW to b,
-    // m_b vab.gW and m_a vab.gW to the densities, and -V_b vab gW^T, -V_a vab gW^T to the gradients.
-    std::fill(q.acc.begin() + q.lo, q.acc.begin() + q.hi, Vec2::Zero());
-    if constexpr (!Terms::summation) std::fill(q.drho.begin() + q.lo, q.drho.begin() + q.hi, 0.0);
-    std::fill(q.grad_v.begin() + q.lo, q.grad_v.begin() + q.hi, Tensor2::Zero());
+    // m_b vab.gW and m_a vab.gW to the densities, and -V_b vab gW^T, -V_a vab gW^T to the gradients, into
+    // the thread's PairSums records.
+    std::fill(q.sums.begin() + q.lo, q.sums.begin() + q.hi, PairSums{});
     {
-      const double* __restrict rho_ = rho.data();
-      const Vec2* __restrict vhat_ = vhat.data();
-      const Tensor2* __restrict A_ = sigma_over_rho2.data();
-      const Tensor2* __restrict R_ = R.data();
-      const double* __restrict volume_ = volume.data();
-      Vec2* __restrict acc = q.acc.data();
-      double* __restrict drho = q.drho.data();
-      Tensor2* __restrict grad_v = q.grad_v.data();
-      const double alpha = p.alpha, beta = p.beta, c0 = p.c0;
-      for (std::size_t a = a_begin; a < a_end; ++a) {
-        const Tensor2 Aa = A_[a];
-        // Row a's own sums in registers: its pairs reach only b > a, so nothing else writes a's entries
-        // during the row, and loading them first and storing them after adds the same terms in the same
-        // order (bit-identical). Through memory, every pair's store to b could alias a's entries, so the
-        // compiler reloaded and stored a's sums for every pair.
-        Vec2 acc_a = acc[a];
-        double drho_a = Terms::summation ? 0.0 : drho[a];
-        const double* ga_mem = grad_v[a].data();
-        double ga0 = ga_mem[0], ga1 = ga_mem[1], ga2 = ga_mem[2], ga3 = ga_mem[3];
-        for (std::uint32_t k = row_[a], end = row_[a] + active_[a]; k < end; ++k) {
-          const std::uint32_t b = nb_[k];
-          const Vec2 gW = dx_[k] * F_[k];  // grad_a W_ab (3.2)
-          // M = A_a + A_b (+ (R_a + R_b) f^n) by components (column-major 0: (0,0), 1: (1,0), 2: (0,1), 3: (1,1)):
-          // as an Eigen matrix, M went through the stack and was read back in wider pieces than written, a
-          // store-forwarding stall; the operations (and their fused multiply-adds) are Eigen's.
-          const double* Ab = A_[b].data();
-          double M[4] = {Aa(0, 0) + Ab[0], Aa(1, 0) + Ab[1], Aa(0, 1) + Ab[2], Aa(1, 1) + Ab[3]};
-          if constexpr (Terms::artificial_stress) {
-            const double fn = artificial_stress_fn(W_[k] * inv_Wdp, nart);
-            const double *Ra = R_[a].data(), *Rb = R_[b].data();
-            for (int c = 0; c < 4; ++c) M[c] = std::fma(Ra[c] + Rb[c], fn, M[c]);
-          }
-          if constexpr (Terms::viscosity) {
-            // Monaghan's Pi_ab >= 0 acts as a pressure, so it enters the stress sum with a minus sign. (A
-            // branch-free form, Pi computed for every pair and selected, measured 8% slower on the plate: the
-            // two divisions then run for every pair.)
-            const double vr = (v_[a] - v_[b]).dot(dx_[k]);
-            if (vr < 0.0) {
-              const double Pi = monaghan_pi(vr, dx_[k].squaredNorm(), h, eta2, alpha, beta, c0, rho_[a], rho_[b]);
-              M[0] -= Pi;
-              M[3] -= Pi;
+      PairSums* __restrict sums = q.sums.data();
+      if constexpr (Wide) {
+#if SPH_WIDE_PASS2
+        const Pass2Inputs in{nb_, dx_->data(), W_, F_, v_->data(), vhat.data()->data(), m_, rho.data(),
+                             sigma_over_rho2.data()->data(), Terms::artificial_stress ? R.data()->data() : nullptr,
+                             volume.data(), h, eta2, p.alpha, p.beta, p.c0, inv_Wdp, nart};
+        for (std::size_t a = a_begin; a < a_end; ++a) wide::pass2_row<Terms>(a, row_[a], row_[a] + active_[a], in, sums);
+#endif
+      } else {
+        const double* __restrict rho_ = rho.data();
+        const Vec2* __restrict vhat_ = vhat.data();
+        const Tensor2* __restrict A_ = sigma_over_rho2.data();
+        const Tensor2* __restrict R_ = R.data();
+        const double* __restrict volume_ = volume.data();
+        const double alpha = p.alpha, beta = p.beta, c0 = p.c0;
+        for (std::size_t a = a_begin; a < a_end; ++a) {
+          const Tensor2 Aa = A_[a];
+          // Row a's own sums in registers: its pairs reach only b > a, so nothing else writes a's entries
+          // during the row, and loading them first and storing them after adds the same terms in the same
+          // order (bit-identical). Through memory, every pair's store to b could alias a's entries, so the
+          // compiler reloaded and stored a's sums for every pair.
+          double sa[7];
+          for (int c = 0; c < 7; ++c) sa[c] = sums[a].s[c];
+          const double ma = m_[a], Va = volume_[a];
+          for (std::uint32_t k = row_[a], end = row_[a] + active_[a]; k < end; ++k) {
+            const std::uint32_t b = nb_[k];
+            const Vec2 gW = dx_[k] * F_[k];  // grad_a W_ab (3.2)
+            // M = A_a + A_b (+ (R_a + R_b) f^n) by components (column-major 0: (0,0), 1: (1,0), 2: (0,1), 3: (1,1)):
+            // as an Eigen matrix, M went through the stack and was read back in wider pieces than written, a
+            // store-forwarding stall; the operations (and their fused multiply-adds) are Eigen's.
+            const double* Ab = A_[b].data();
+            double M[4] = {Aa(0, 0) + Ab[0], Aa(1, 0) + Ab[1], Aa(0, 1) + Ab[2], Aa(1, 1) + Ab[3]};
+            if constexpr (Terms::artificial_stress) {
+              const double fn = artificial_stress_fn(W_[k] * inv_Wdp, nart);
+              const double *Ra = R_[a].data(), *Rb = R_[b].data();
+              for (int c = 0; c < 4; ++c) M[c] = std::fma(Ra[c] + Rb[c], fn, M[c]);
             }
+            if constexpr (Terms::viscosity) {
+              // Monaghan's Pi_ab >= 0 acts as a pressure, so it enters the stress sum with a minus sign. (A
+              // branch-free form, Pi computed for every pair and selected, measured 8% slower on the plate: the
+              // two divisions then run for every pair.)
+              const double vr = (v_[a] - v_[b]).dot(dx_[k]);
+              if (vr < 0.0) {
+                const double Pi = monaghan_pi(vr, dx_[k].squaredNorm(), h, eta2, alpha, beta, c0, rho_[a], rho_[b]);
+                M[0] -= Pi;
+                M[3] -= Pi;
+              }
+            }
+            const Vec2 vab = vhat_[a] - vhat_[b];
+            // The pair's terms in PairSums' order: M gW, vab.gW, G = vab gW^T by components (as Eigen
+            // temporaries they went through the stack, store-forwarding stalls that took a fifth of pass 2).
+            const double t[7] = {std::fma(M[2], gW.y(), M[0] * gW.x()), std::fma(M[3], gW.y(), M[1] * gW.x()),
+                                 Terms::summation ? 0.0 : vab.dot(gW),
+                                 vab.x() * gW.x(), vab.y() * gW.x(), vab.x() * gW.y(), vab.y() * gW.y()};
+            // a gains m_b t (acceleration, continuity) and -V_b t (gradient); b gains -m_a t, +m_a t, -V_a t.
+            const double mb = m_[b], Vb = volume_[b];
+            double* __restrict sb = sums[b].s;
+            for (int c = 0; c < 3; ++c) sa[c] = std::fma(mb, t[c], sa[c]);
+            for (int c = 3; c < 7; ++c) sa[c] = std::fma(-Vb, t[c], sa[c]);
+            sb[0] = std::fma(-ma, t[0], sb[0]);
+            sb[1] = std::fma(-ma, t[1], sb[1]);
+            sb[2] = std::fma(ma, t[2], sb[2]);
+            for (int c = 3; c < 7; ++c) sb[c] = std::fma(-Va, t[c], sb[c]);
           }
-          const Vec2 f(std::fma(M[2], gW.y(), M[0] * gW.x()), std::fma(M[3], gW.y(), M[1] * gW.x()));  // M gW
-          acc_a += m_[b] * f;
-          acc[b] -= m_[a] * f;
-          const Vec2 vab = vhat_[a] - vhat_[b];
-          if constexpr (!Terms::summation) {
-            const double d = vab.dot(gW);
-            drho_a += m_[b] * d;
-            drho[b] += m_[a] * d;
-          }
-          // G = vab gW^T by components: as an Eigen temporary it went through the stack in two halves and
-          // was read back whole, a store-forwarding stall that took a fifth of pass 2.
-          const double G00 = vab.x() * gW.x(), G10 = vab.y() * gW.x(), G01 = vab.x() * gW.y(), G11 = vab.y() * gW.y();
-          double* __restrict gb = grad_v[b].data();  // column-major: (0,0), (1,0), (0,1), (1,1)
-          const double Va = volume_[a], Vb = volume_[b];
-          ga0 -= Vb * G00; ga1 -= Vb * G10; ga2 -= Vb * G01; ga3 -= Vb * G11;
-          gb[0] -= Va * G00; gb[1] -= Va * G10; gb[2] -= Va * G01; gb[3] -= Va * G11;
+          for (int c = 0; c < 7; ++c) sums[a].s[c] = sa[c];
         }
-        acc[a] = acc_a;
-        if constexpr (!Terms::summation) drho[a] = drho_a;
-        double* ga = grad_v[a].data();
-        ga[0] = ga0; ga[1] = ga1; ga[2] = ga2; ga[3] = ga3;
       }
     }
 #pragma omp barrier
 #pragma omp for schedule(static)
     for (std::size_t a = 0; a < n; ++a) {
-      const Vec2 acc = sum_threads(a, &GrayScratch::Partial::acc);
-      const Tensor2 grad_v = sum_threads(a, &GrayScratch::Partial::grad_v);  // grad_v(i, j) = d vhat_i / d x_j
+      const PairSums sum = sum_threads(a, &GrayScratch::Partial::sums);
+      const Vec2 acc(sum.s[PairSums::kAccX], sum.s[PairSums::kAccY]);
+      Tensor2 grad_v;  // grad_v(i, j) = d vhat_i / d x_j
+      for (int c = 0; c < 4; ++c) grad_v.data()[c] = sum.s[PairSums::kGrad + c];
       const Motion kind = body.motion[a];
       out.dv[a] = kind == Motion::Free ? acc : kind == Motion::Driven ? body.drive[a] : Vec2::Zero();
       out.dx[a] = kind == Motion::Free ? vhat[a] : kind == Motion::Driven ? v[a] : Vec2::Zero();
       if constexpr (Terms::summation) out.drho[a] = 0.0;
-      else out.drho[a] = sum_threads(a, &GrayScratch::Partial::drho);
+      else out.drho[a] = sum.s[PairSums::kDrho];
       out.dS[a] = hooke_deviatoric_rate(p.mu, grad_v, S[a]);
       if constexpr (!Terms::xsph) out.vhat[a] = v[a];
     }
