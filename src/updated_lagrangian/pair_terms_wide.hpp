@@ -11,6 +11,7 @@
 #include <cstdint>
 
 namespace sph {
+
 /// Per particle, the sums of pass 2 in one cache line: acceleration (x, y), continuity, velocity gradient
 /// (column-major), and a zero.
 struct alignas(64) PairSums {
@@ -21,7 +22,6 @@ struct alignas(64) PairSums {
     return *this;
   }
 };
-
 }  // namespace sph
 
 #if defined(__AVX512F__) && defined(__AVX512VL__)
@@ -29,7 +29,6 @@ struct alignas(64) PairSums {
 #include <immintrin.h>
 
 namespace sph {
-
 
 /// What pass 2 reads: the pair list, the particles' fields and the constants of the terms.
 struct Pass2Inputs {
