@@ -372,12 +372,12 @@ ENTRIES = {
 #   closed form   evaluated here (OWN_BAND_CLOSED_FORMS), independent of our runs
 #   prediction    an analysis committed before the run that decided it
 #   tolerance     the row's tolerance or a former tolerance, set before the run
-#   convergence   the excess measured at a coarser resolution of a convergence study (standards: allowed)
 #   reference     another method's value (our finite elements), not the SPH run it bounds
 #   measured      set after the run from the order of our own measured value: the analysis predicts the cause
 #                 (the sign, a nonzero value), not the size. These are regression bounds, not analyses.
 _T_BAND = ("live: T_theory, the thin-plate theory of the table's column (a lower bound)",
-           "convergence: T_theory x 1.191, the excess G-fig4 measures at 10 particles across (coarsest of the tables)")
+           "live: T_bound = T_theory x (1 + the excess of Fig 4's plate at 10 particles across, the coarsest of the "
+           "tables, run by the same driver): the period converges from above")
 OWN_BAND_PROVENANCE = {
     ("G-fig8", "eps0_fracture_time"): ("measured: the resolution study's parting times 182-204 (mean 190) less 30%",
                                        "measured: the same plus 30%, the spread the threads' round-off gives (G-stab-rs)"),
@@ -391,9 +391,9 @@ OWN_BAND_PROVENANCE = {
                                                 "prediction: 3 dp at dp = 0.016 (1869b56, before the dp = 0.008 run)"),
     ("G-tab1", "T_sph_H2_Vf0.05_mu0.6"): _T_BAND,
     ("G-tab1", "max_error_vs_theory_table1"): ("closed form: 0, an error is non-negative",
-                                               "convergence: 0.191 from the T_sph rows' band"),
+                                               "live: period_excess_coarse_reference, the T_sph rows' bound"),
     ("G-tab2", "max_error_vs_theory_table2"): ("closed form: 0, an error is non-negative",
-                                               "convergence: 0.191 from the T_sph rows' band"),
+                                               "live: period_excess_coarse_reference, the T_sph rows' bound"),
     **{("G-tab2", f"T_sph_H1_Vf{v}_mu{m}"): _T_BAND for v in ("0.01", "0.03", "0.05") for m in ("0.22", "0.3", "0.6")},
     ("H-fig2", "max_L_relative_spam"): ("tolerance: 1e-3, far above round-off (the pair-torque run: 1.5e-11)",
                                         "measured: 0.2 above the measured ~5%"),

@@ -130,11 +130,11 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
   }
   try {
     const auto start = std::chrono::steady_clock::now();
-    const long long work0 = particle_steps_taken();
+    const long long work0 = particle_steps_taken(), reused0 = particle_steps_reused();
     prepare_output();
     body();
     write_timing(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                 particle_steps_taken() - work0);
+                 particle_steps_taken() - work0, particle_steps_reused() - reused0);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << name_ << ": error: " << e.what() << "\n";
@@ -167,9 +167,10 @@ void Driver::retarget(const std::string& target) {
   prepare_output();
 }
 
-void Driver::write_timing(double wall_s, long long particle_steps) const {
-  CsvWriter t(completion_record(), info(), {"target", "driver", "wall_s", "particle_steps", "threads"});
-  t.row(target_, name_, wall_s, static_cast<double>(particle_steps), omp_get_max_threads());
+void Driver::write_timing(double wall_s, long long particle_steps, long long reused_particle_steps) const {
+  CsvWriter t(completion_record(), info(), {"target", "driver", "wall_s", "particle_steps", "threads", "reused_particle_steps"});
+  t.row(target_, name_, wall_s, static_cast<double>(particle_steps), omp_get_max_threads(),
+        static_cast<double>(reused_particle_steps));
 }
 
 RunInfo Driver::info() const {

@@ -89,11 +89,11 @@ class Driver {
   void value(const std::string& quantity, double v, const std::string& note = "");
 
  private:
-  /// timing_<driver>.csv in the output directory: the wall time of the run and the particle-steps its time
-  /// loops took (core/run_loop.hpp), for results/timings.csv. It is also the run's completion record:
+  /// timing_<driver>.csv in the output directory: the wall time of the run, the particle-steps its time
+  /// loops took and those it took from stored runs instead (core/run_loop.hpp), for results/timings.csv. It is also the run's completion record:
   /// removed before the body starts and written only after it has returned, so that a run that fails, blows
   /// up unhandled or is interrupted leaves its other files without it, and reference/check.py refuses them.
-  void write_timing(double wall_s, long long particle_steps) const;
+  void write_timing(double wall_s, long long particle_steps, long long reused_particle_steps) const;
   std::filesystem::path completion_record() const;
   /// Before a run: the output folder exists and is writable (else an error naming --out), and the run's
   /// completion record is removed.

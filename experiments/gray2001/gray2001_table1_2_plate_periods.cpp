@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
   int table = 0;
   long max_steps = -1;
   int crossings = 1;
-  bool same_n = true;
+  bool same_n = true, coarse_reference = true;
   d.param("crossings", crossings, "stop each run at this zero crossing of the tip (2: one period; 1: half, T = 2 t_1)").positive();
   d.param("dp", dp, "particle spacing (H/dp must be an integer)").positive();
   d.param("clamp-length", clamp, "plate length held between the fixed layers").non_negative();
@@ -74,6 +74,7 @@ int main(int argc, char** argv) {
   d.param("table", table, "1 or 2 for one table only, 0 for both").at_least(0).at_most(2);
   d.param("paper-dp", paper_dp, "the spacing of the paper's runs, used only by the theory reading H - dp").positive();
   d.param("same-n-reading", same_n, "Table 2 also at Table 1's particles across the thickness (dp H / 2), the reading of issue 14");
+  d.param("coarse-reference", coarse_reference, "the n = 10 run whose excess over theory bounds every row's period (T_bound_*)");
   d.param("max-steps", max_steps, "stop each run after this many steps (smoke test); -1 = no limit");
   std::vector<std::string> only, row_names;
   for (const Row& r : kRows) row_names.push_back(key(r));
@@ -99,6 +100,36 @@ int main(int argc, char** argv) {
           d.value("T_theory_eq2.8_" + theory_key(H, mu).substr(9), scenes::plate_theory_period(2 * mu * (1 + nu), nu, H - paper_dp, 20.0, 1.0),
                   "(7.1) with thickness H - paper_dp, nu from (2.8) as printed, E = 2 mu (1 + nu)");
         }
+    // The upper end of the rows' own bands (reference/G-tab1.csv, G-tab2.csv). The period converges from
+    // above (G-fig4: n = 10, 20, 30 give 1816.6, 1681.7, 1650.3), so its excess over the theory column at the
+    // coarsest resolution of either table, 10 particles across, bounds every row's: Fig 4's plate (H = 2,
+    // mu = 0.22, V_f = 0.01) at dp = 0.2 with Fig 4's measure (one period, between the first two crossings).
+    // Measured here, beside the rows it bounds, rather than copied from G-fig4's run.
+    if (coarse_reference && !d.quick() && max_steps < 0) {
+      scenes::PlateRunSpec s;
+      s.plate.L = 20.0;
+      s.plate.H = 2.0;
+      s.plate.dp = 0.2;
+      s.plate.clamp_length = clamp;
+      s.plate.Vf = 0.01;
+      s.scheme = scheme;
+      s.scheme.mu = 0.22;
+      s.t_end = 2.0 * scenes::plate_theory_period(0.22, 2.0, 20.0);  // an upper bound: stops at the second crossing
+      s.stop_after_crossings = 2;
+      s.sample_dt = 0.5;
+      s.fracture_check_dt = 100.0;
+      const auto res = scenes::run_plate(s, {}, "plate coarse reference n10");
+      if (!res.blow_up.empty()) throw std::runtime_error("coarse reference: " + res.blow_up);
+      const double T = scenes::period_from_crossings(scenes::zero_crossings(res.trace));
+      const double excess = T / scenes::plate_theory_period(0.22, 2.0 - paper_dp, 20.0) - 1.0;
+      d.value("T_sph_coarse_reference", T, "Fig 4's plate at n = 10 (dp = 0.2), period between the first two crossings");
+      d.value("period_excess_coarse_reference", excess, "T_sph_coarse_reference / T_theory(H - paper_dp) - 1: bounds every row's error");
+      for (const double H : {2.0, 1.0})
+        for (const double mu : {0.22, 0.30, 0.60})
+          if (table == 0 || (table == 1) == (H == 2.0))
+            d.value("T_bound_" + theory_key(H, mu).substr(9), (1.0 + excess) * scenes::plate_theory_period(mu, H - paper_dp, 20.0),
+                    "T_theory (H - paper_dp) x (1 + period_excess_coarse_reference): the rows' upper bound");
+    }
     auto periods_csv = d.csv("periods.csv", {"table", "H", "Vf", "mu", "dp", "particles", "dt", "steps", "wall_s",
                                              "T_sph", "T_theory_thin", "T_theory_reading", "error_vs_theory",
                                              "tip_amplitude", "fragments"});
@@ -121,7 +152,7 @@ int main(int argc, char** argv) {
       s.stop_after_crossings = crossings;
       s.max_steps = max_steps;
       s.sample_dt = 0.5;
-      s.fracture_check_dt = 50.0;
+      s.fracture_check_dt = 100.0;  // as Fig 4 and the work-precision sweep, so that their runs can serve these
       const std::string name = tag.empty() ? key(row) : tag + "_" + key(row);
       const auto res = scenes::run_plate(s, {}, "plate " + name);
       if (!res.blow_up.empty()) throw std::runtime_error(name + ": " + res.blow_up);

@@ -25,6 +25,9 @@ struct PlateRunSpec {
   double run_after_fracture = -1;  ///< stop this long after the first fracture; < 0: never stop
   int stop_after_crossings = -1;   ///< stop once the tip has crossed its start line this often; < 0: never
   bool power_budget = false;       ///< record GraySolver::power_budget() at every sample (a pass over the pairs)
+  /// Take the result from a stored run of the same trajectory when one holds it (plate_run_cache.hpp); false
+  /// for a run whose wall time is reported (a served run takes none).
+  bool reuse = true;
 };
 
 /// p_art, p_visc, p_xsph: the power of the artificial stress, the viscosity and XSPH's velocity
@@ -38,6 +41,7 @@ struct PlateRunResult {
   double dt = 0, wall_s = 0;
   double fracture_time = -1;       ///< first time the free particles were in more than one piece
   std::string blow_up;             ///< message if the run blew up
+  bool reused = false;             ///< served from a stored run of the same key (plate_run_cache.hpp), not stepped
 };
 
 /// Runs the plate; `snapshot(t, solver, body)` is called every sample if given (for HDF5 output).
