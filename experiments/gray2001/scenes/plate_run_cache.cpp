@@ -31,6 +31,22 @@ std::string exact(double v) {
 
 // Runs with and without the power budget are stored apart (the budget does not change the trajectory, but
 // only a run that recorded it can serve a run that asks for it).
+// The instruction set the build targets (-march=native): two hosts sharing a results folder (a cluster's
+// network file system) build the same code version into different arithmetic (the AVX-512 pair loops).
+const char* isa() {
+  return ""
+#if defined(__AVX512F__)
+         "avx512f "
+#endif
+#if defined(__AVX2__)
+         "avx2 "
+#endif
+#if defined(__FMA__)
+         "fma "
+#endif
+         "base";
+}
+
 std::string path_of(const std::string& dir, const std::string& key, bool power_budget) {
   std::ostringstream s;
   s << dir << "/plate-" << std::hex << std::hash<std::string>{}(key) << (power_budget ? "-power" : "") << ".run";
@@ -91,7 +107,7 @@ std::string plate_run_key(const PlateRunSpec& s) {
   const sph::GrayParameters& g = s.scheme;
   const sph::GrayOptions& o = s.options;
   std::ostringstream k;
-  k << "code " << sph::code_version() << " threads " << omp_get_max_threads()
+  k << "code " << sph::code_version() << " isa " << isa() << " threads " << omp_get_max_threads()
     << " plate L " << exact(p.L) << " H " << exact(p.H) << " dp " << exact(p.dp) << " clamp " << exact(p.clamp_length)
     << " layers " << p.clamp_layers << " Vf " << exact(p.Vf) << " perturbation " << exact(p.perturbation)
     << " seed " << p.seed << " scheme rho0 " << exact(g.rho0) << " c0 " << exact(g.c0) << " mu " << exact(g.mu)

@@ -4,7 +4,7 @@
 // the coarse reference of Tables 1 and 2, Table 1's rows are prefixes of the runs of Figs 2, 4 and 5 and of
 // the work-precision sweep. A run stores its tip trace (every sample, with the step it was taken at) under the
 // key of everything that decides the trajectory and the samples: the plate, the scheme's parameters and
-// options, the sample and fracture-check intervals, the thread count and the code version. A later run with
+// options, the sample and fracture-check intervals, the thread count, the instruction set and the code version. A later run with
 // the same key whose stop (its zero crossings) falls inside the stored trace takes that prefix instead of
 // stepping: the same numbers, bit for bit, as stepping would give (the loop's stop is decided at samples, the
 // time step is fixed, and no step of the prefix is shortened to meet t_end).
