@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <unistd.h>
 
 #include "gray2001/scenes/plate_run.hpp"
@@ -107,6 +108,18 @@ TEST_F(PlateRunCache, RunsTheStoreCannotHoldAreStepped) {
   auto limited = short_plate(1);
   limited.max_steps = 50;
   EXPECT_FALSE(scenes::run_plate(limited).reused);
+}
+
+TEST_F(PlateRunCache, StoringRemovesTheRunsOfOtherCodeVersions) {
+  std::filesystem::create_directories(dir_);
+  const auto stale = dir_ / "plate-0.run", foreign = dir_ / "notes.txt";
+  std::ofstream(stale) << "sph-plate-run-1\ncode 0123abc isa base threads 1 plate ...\n";
+  std::ofstream(foreign) << "not a stored run\n";
+  store_on();
+  scenes::run_plate(short_plate(1));
+  EXPECT_FALSE(std::filesystem::exists(stale));
+  EXPECT_TRUE(std::filesystem::exists(foreign));  // only the store's own files
+  EXPECT_TRUE(scenes::run_plate(short_plate(1)).reused);  // this version's run stays
 }
 
 TEST_F(PlateRunCache, OffWithoutADirectoryAndTheKeyNamesEveryParameter) {

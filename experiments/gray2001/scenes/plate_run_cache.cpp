@@ -88,6 +88,23 @@ std::optional<StoredPlateRun> load(const std::string& dir, const std::string& ke
   return r;
 }
 
+/// Removes the stored runs of other code versions (a full make figures stores ~10 MB; a rebuilt driver can use
+/// none of an older build's runs). Another build writing into the same folder at the same time loses reuse, not
+/// results.
+void prune_other_versions(const std::string& dir) {
+  const std::string mine = std::string("code ") + sph::code_version() + " ";
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    if (entry.path().extension() != ".run") continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::string magic, key;
+    if (std::getline(in, magic) && magic == kMagic && std::getline(in, key) && key.rfind(mine, 0) != 0) {
+      in.close();
+      std::filesystem::remove(entry.path(), ec);
+    }
+  }
+}
+
 }  // namespace
 
 std::string plate_run_cache_dir() {
@@ -181,6 +198,7 @@ void store_plate_run(const PlateRunSpec& s, const StoredPlateRun& run, const std
     if (!out) { std::remove(tmp.c_str()); return; }  // a full disk loses the reuse, not the run
   }
   std::filesystem::rename(tmp, path);  // atomic: a concurrent reader sees the old file or the new one
+  prune_other_versions(dir);
 }
 
 }  // namespace scenes

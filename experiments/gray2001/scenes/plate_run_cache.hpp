@@ -40,7 +40,8 @@ std::string plate_run_key(const PlateRunSpec& s);
 /// The result of `s` served from the store, if a stored run of the same key contains it.
 std::optional<PlateRunResult> serve_plate_run(const PlateRunSpec& s, const std::string& dir);
 
-/// Stores a finished run (kept only if it is longer than the run already stored under its key).
+/// Stores a finished run (kept only if it is longer than the run already stored under its key), and removes
+/// the runs stored by other code versions.
 void store_plate_run(const PlateRunSpec& s, const StoredPlateRun& run, const std::string& dir);
 
 }  // namespace scenes
