@@ -47,17 +47,9 @@ int main(int argc, char** argv) {
     for (double a : alphas) runs.push_back({ns.front(), a});
     std::vector<double> T_of_n, A_of_n;  // period and first amplitude at the study's alpha, by n
     for (const Run& run : runs) {
-      scenes::PlateRunSpec s;
-      s.plate.H = 2.0;
-      s.plate.dp = 2.0 / run.n;
-      s.plate.clamp_length = clamp;
-      s.plate.Vf = Vf;
-      s.scheme = scheme;
-      s.scheme.alpha = s.scheme.beta = run.alpha;
-      s.t_end = 2.0 * periods * T_theory;  // an upper bound: the run stops at the second crossing
-      s.stop_after_crossings = 2;
-      s.sample_dt = 0.5;
-      s.fracture_check_dt = 100.0;
+      sph::GrayParameters run_scheme = scheme;
+      run_scheme.alpha = run_scheme.beta = run.alpha;
+      scenes::PlateRunSpec s = scenes::fig4_plate_run(run.n, Vf, clamp, run_scheme, periods);
       s.power_budget = true;  // issue 15 (a): where the energy of the finest run comes from
       std::ostringstream tag;
       tag << "n" << run.n << "_alpha" << run.alpha;

@@ -106,19 +106,9 @@ int main(int argc, char** argv) {
     // mu = 0.22, V_f = 0.01) at dp = 0.2 with Fig 4's measure (one period, between the first two crossings).
     // Measured here, beside the rows it bounds, rather than copied from G-fig4's run.
     if (coarse_reference && !d.quick() && max_steps < 0) {
-      scenes::PlateRunSpec s;
-      s.plate.L = 20.0;
-      s.plate.H = 2.0;
-      s.plate.dp = 0.2;
-      s.plate.clamp_length = clamp;
-      s.plate.Vf = 0.01;
-      s.scheme = scheme;
-      s.scheme.mu = 0.22;
-      s.t_end = 2.0 * scenes::plate_theory_period(0.22, 2.0, 20.0);  // an upper bound: stops at the second crossing
-      s.stop_after_crossings = 2;
-      s.sample_dt = 0.5;
-      s.fracture_check_dt = 100.0;
-      const auto res = scenes::run_plate(s, {}, "plate coarse reference n10");
+      sph::GrayParameters fig4_scheme = scheme;
+      fig4_scheme.mu = 0.22;
+      const auto res = scenes::run_plate(scenes::fig4_plate_run(10, 0.01, clamp, fig4_scheme), {}, "plate coarse reference n10");
       if (!res.blow_up.empty()) throw std::runtime_error("coarse reference: " + res.blow_up);
       const double T = scenes::period_from_crossings(scenes::zero_crossings(res.trace));
       const double excess = T / scenes::plate_theory_period(0.22, 2.0 - paper_dp, 20.0) - 1.0;

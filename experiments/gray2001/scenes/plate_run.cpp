@@ -11,6 +11,21 @@
 
 namespace scenes {
 
+PlateRunSpec fig4_plate_run(int n, double Vf, double clamp_length, const sph::GrayParameters& scheme, double periods) {
+  PlateRunSpec s;
+  s.plate.L = 20.0;
+  s.plate.H = 2.0;
+  s.plate.dp = 2.0 / n;
+  s.plate.clamp_length = clamp_length;
+  s.plate.Vf = Vf;
+  s.scheme = scheme;
+  s.t_end = 2.0 * periods * plate_theory_period(scheme.mu, 2.0, 20.0);
+  s.stop_after_crossings = 2;
+  s.sample_dt = 0.5;
+  s.fracture_check_dt = 100.0;
+  return s;
+}
+
 PlateRunResult run_plate(const PlateRunSpec& s,
                          const std::function<void(const sph::GraySolver&, const sph::ElasticBody&)>& on_sample,
                          const std::string& progress_label) {
