@@ -59,9 +59,9 @@ def golden_max(f, a, b, tol=1e-13):
 
 
 # ---- Gray, Monaghan & Swift 2001, Section 5: lattice sums (5.5), (5.14) with the 2D cubic spline ----------------
-def cubic_spline_2d(r, h):
-    """W, dW/dr, d2W/dr2 of Monaghan's M4 spline in 2D, support 2h, norm 10/(7 pi h^2)."""
-    q, s = r / h, 10.0 / (7.0 * math.pi * h * h)
+def cubic_spline(r, h, dim=2):
+    """W, dW/dr, d2W/dr2 of Monaghan's M4 spline, support 2h, norm 2/(3h) in 1D and 10/(7 pi h^2) in 2D."""
+    q, s = r / h, {1: 2.0 / (3.0 * h), 2: 10.0 / (7.0 * math.pi * h * h)}[dim]
     if q < 1:
         return s * (1 - 1.5 * q * q + 0.75 * q ** 3), s * (-3 * q + 2.25 * q * q) / h, s * (-3 + 4.5 * q) / h ** 2
     if q < 2:
@@ -74,7 +74,7 @@ def gray_sums(lattice, h, n=4, k=(math.pi, 0.0)):
     """A_x, B_x, B_y, f_xx at particle a = origin of a square or face-centred lattice (dp = 1, odd rows of the
     face-centred lattice shifted by dp/2), r_ab = r_a - r_b, sums over the support. Hessian of g(|r|):
     g'' e e^T + (g'/r)(I - e e^T)."""
-    W1 = cubic_spline_2d(1.0, h)[0]
+    W1 = cubic_spline(1.0, h)[0]
     Z = 1.0 / ((n + 1) * W1 ** n)
     A_x = B_x = B_y = f_xx = 0.0
     m = int(2 * h) + 3
@@ -88,7 +88,7 @@ def gray_sums(lattice, h, n=4, k=(math.pi, 0.0)):
             ex, ey = x / r, y / r
             ph = k[0] * x + k[1] * y
             omc, sn = 1 - math.cos(ph), math.sin(ph)
-            W, dW, d2W = cubic_spline_2d(r, h)
+            W, dW, d2W = cubic_spline(r, h)
             A_x += sn * dW * ex
             B_x += omc * (d2W * ex * ex + dW / r * (1 - ex * ex))
             B_y += omc * (d2W * ey * ey + dW / r * (1 - ey * ey))
@@ -296,9 +296,7 @@ def _fc(h, key):
 
 
 def _literal_reading_share(m=1.0, rho=1.0, h=1.0):
-    def dW(r):  # 1D cubic spline, support 2h, norm 2/(3h)
-        q, c = r / h, 2.0 / (3.0 * h)
-        return c * ((-3 * q + 2.25 * q * q) / h if q < 1 else (-0.75 * (2 - q) ** 2 / h if q < 2 else 0.0))
+    dW = lambda r: cubic_spline(r, h, dim=1)[1]
     agree = total = 0
     for q in np.linspace(0.05, 1.95, 39):
         for sigma in (-1.0, 1.0):

@@ -49,8 +49,7 @@ int main(int argc, char** argv) {
     for (const Run& run : runs) {
       sph::GrayParameters run_scheme = scheme;
       run_scheme.alpha = run_scheme.beta = run.alpha;
-      scenes::PlateRunSpec s = scenes::fig4_plate_run(run.n, Vf, clamp, run_scheme, periods);
-      s.power_budget = true;  // issue 15 (a): where the energy of the finest run comes from
+      const scenes::PlateRunSpec s = scenes::fig4_plate_run(run.n, Vf, clamp, run_scheme, periods);
       std::ostringstream tag;
       tag << "n" << run.n << "_alpha" << run.alpha;
       const auto r = scenes::run_plate(s, {}, "plate " + tag.str());

@@ -45,9 +45,9 @@ struct PlateRunResult {
 };
 
 /// Fig 4's plate run (Gray 2001 Sec 7.1): L = 20, H = 2, n particles across, the tip's first period (stops at
-/// its second zero crossing; t_end = 2 `periods` thin-plate periods is only a bound), sampled every 0.5 and
-/// checked for fracture every 100. G-fig4's study and the Table 1-2 driver's coarse reference both build it here:
-/// one trajectory, which the run store (plate_run_cache.hpp) steps once.
+/// its second zero crossing; t_end = 2 `periods` thin-plate periods is only a bound), sampled every 0.5, checked
+/// for fracture every 100, with the power budget recorded. G-fig4's study and the Table 1-2 driver's coarse
+/// reference both build it here: one run, which the run store (plate_run_cache.hpp) steps once for both.
 PlateRunSpec fig4_plate_run(int n, double Vf, double clamp_length, const sph::GrayParameters& scheme, double periods = 1.0);
 
 /// Runs the plate; `snapshot(t, solver, body)` is called every sample if given (for HDF5 output).
