@@ -377,7 +377,8 @@ _T_BAND = ("live: T_theory, the thin-plate theory of the table's column (a lower
            "live: T_bound = T_theory x (1 + the excess of Fig 4's plate at 10 particles across, the coarsest of the "
            "tables, run by the same driver): the period converges from above")
 OWN_BAND_PROVENANCE = {
-    ("G-fig8", "eps0_fracture_time"): ("measured: the resolution study's parting times 182-204 (mean 190) less 30%",
+    ("G-fig8", "eps0_fracture_time"): ("live: eps0_opening_time, the first gap between neighbouring columns (the slab "
+                                       "parts after its gaps open)",
                                        "measured: the same plus 30%, the spread the threads' round-off gives (G-stab-rs)"),
     ("G-fig8", "eps0_opening_from_junction"): ("tolerance: the row's 0.3 cm (the claim 'near the junction' negated)",
                                                "measured: above the study's 0.40-0.61 cm at dp = 0.016-0.064"),
@@ -417,7 +418,8 @@ OWN_BAND_PROVENANCE = {
     ("I-interp", "compromise_best_cover"): ("live: smallest_well_sampled_cover", "live: smallest_well_sampled_cover"),
     ("I-interp", "ghosts_end_error_ratio_max"): ("closed form: 1 (the lattice normalisation error, with or without) less 10%",
                                                  "closed form: 1 plus 20%"),
-    ("I-nh1d", "stability_lost_at_stretch_nu0.49"): ("measured: 3.0 below the measured 3.22",
+    ("I-nh1d", "stability_lost_at_stretch_nu0.49"): ("live: peak_first_crossed_at_stretch_nu0.49, the imposed stretch when a "
+                                                     "particle's F first passed the peak of P11 (the mechanism)",
                                                      "closed form: the static peak of P11(l), 3.6307"),
 }
 

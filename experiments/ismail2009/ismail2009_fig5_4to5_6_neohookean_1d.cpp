@@ -13,6 +13,8 @@
 // tangent speed only falls with stretch for nu = 0.3); loss of stability = the first time the stretches F of
 // two adjacent particles differ by more than 25% of the imposed stretch (a resolved wave changes F by
 // < 0.1 l per spacing; a short-wave instability or localisation jumps), or F is not finite / not positive;
+// peak crossing = the imposed stretch at which some particle's F first exceeds the peak of P11 (the loss's
+// mechanism: the loss cannot come before it unless it has another cause);
 // oscillation = RMS of (T11 - T11_static(l_imposed)) / T11_static(6) at the centre over the second half of
 // the loading; slower loading = 2x and 4x the loading time. The pulse of Fig 5.4 as I-bar's intermediate.
 #include <cmath>
@@ -28,9 +30,19 @@ namespace {
 
 struct StretchResult {
   double lost_at = NAN;       // imposed stretch at the loss of stability (NaN: none)
+  double peak_crossed_at = NAN;  // imposed stretch when some particle's F first passed the peak of P11 (NaN: never)
   double oscillation = NAN;   // RMS relative deviation from the static curve, second half
   double final_T_over_static = NAN;
 };
+
+/// The stretch at which the 1D-strain P11(l) (eq 5.4, l2 = l3 = 1) peaks, dP11/dl = 0, by bisection on
+/// [1, 10]; 10 if it rises throughout (nu = 0.3).
+double peak_stretch_P11(const sph::Lame& m) {
+  auto slope = [&](double l) { return m.mu * (1 + 1 / (l * l)) + m.lambda * (1 - std::log(l)) / (l * l); };
+  double a = 1.0, b = 10.0;
+  for (int i = 0; i < 100; ++i) { const double c = 0.5 * (a + b); (slope(c) > 0 ? a : b) = c; }
+  return a;
+}
 
 }  // namespace
 
@@ -103,6 +115,7 @@ int main(int argc, char** argv) {
       cfg.right.value = [=](double t) { return (stretch - 1.0) * L * std::min(t / T_load, 1.0); };
       sph::TlSolver1D bar(cfg);
       const double dt = dt_scale * dt_factor * bar.h() / c;
+      const double l_peak = peak_stretch_P11(m);
       auto T_static = [&](double l) { return bar.law(l); };
       const int centre = bar.n_real() / 2, n = static_cast<int>(std::ceil(T_load / dt));
       const int every = std::max(1, n / 2000);
@@ -120,6 +133,9 @@ int main(int argc, char** argv) {
           for (int i = 0; i < b.n_real() && !bad; ++i) {
             if (!(b.stretch(i) > 0)) bad = true;
             if (i > 0) dev = std::max(dev, std::abs(b.stretch(i) - b.stretch(i - 1)) / l);
+            // The mechanism of the loss (header): a particle on the falling branch of P11. Recorded before the
+            // loss test, which it does not enter, so that a loss of another cause would come before it.
+            if (std::isnan(res.peak_crossed_at) && b.stretch(i) > l_peak) res.peak_crossed_at = l;
           }
           if (bad || dev > tol) { res.lost_at = l; return true; }
           const double Tc = b.stress(centre);
@@ -145,19 +161,15 @@ int main(int argc, char** argv) {
       d.value("stability_lost_at_stretch_" + tag + "_slow2", lost(slow2), "loading time x2");
       d.value("stability_lost_at_stretch_" + tag + "_slow4", lost(slow4), "loading time x4");
       d.value("stability_lost_at_stretch_" + tag + "_dt_half", lost(half), "dt / 2");
+      d.value("peak_first_crossed_at_stretch_" + tag, std::isnan(base.peak_crossed_at) ? 0.0 : base.peak_crossed_at,
+              "imposed stretch when a particle's F first passed the peak of P11 (0 = never): the loss's lower bound");
       if (nu < 0.4) {
         d.value("oscillation_" + tag, base.oscillation, "RMS (T11 - static)/T11_static(6), centre, 2nd half");
         d.value("oscillation_ratio_slow2_over_base_" + tag, slow2.oscillation / base.oscillation, "Section 5.3.2: slower loading, smaller oscillation");
         d.value("oscillation_ratio_slow4_over_base_" + tag, slow4.oscillation / base.oscillation, "loading time x4");
       }
     }
-    // The analysis: the stretch at which the 1D-strain P11(l) peaks for nu = 0.49 (dP11/dl = 0), by bisection.
-    {
-      const sph::Lame m = sph::lame_from_young_poisson(E, 0.49);
-      auto slope = [&](double l) { return m.mu * (1 + 1 / (l * l)) + m.lambda * (1 - std::log(l)) / (l * l); };
-      double a = 1.0, b = 10.0;
-      for (int i = 0; i < 100; ++i) { const double c = 0.5 * (a + b); (slope(c) > 0 ? a : b) = c; }
-      d.value("peak_stretch_P11_nu0.49", a, "dP11/dl = 0 for l2 = l3 = 1 (eq 5.4)");
-    }
+    // The analysis: the stretch at which the 1D-strain P11(l) peaks for nu = 0.49 (dP11/dl = 0).
+    d.value("peak_stretch_P11_nu0.49", peak_stretch_P11(sph::lame_from_young_poisson(E, 0.49)), "dP11/dl = 0 for l2 = l3 = 1 (eq 5.4)");
   });
 }
