@@ -39,6 +39,13 @@
 //               the variational closure (-0.02). Mass-proportional damping c takes c/2 off the rate: the least
 //               that holds the finest mode is twice its rate (edge_least_damping_finest: 5.0 omega at 161, above
 //               the 4 chosen: there the mode still grows at 0.5 omega, e^3 = 20x over the 6/omega settle).
+//               The spectrum (--edge-eigen-n, 21; scenes::edge_spectrum): the eigenvalues of the linearised
+//               operator of u'' = J u with the closure converged. Complex pairs in the operator itself: at n = 21,
+//               45% of the eigenvalues grow, the fastest at 2.14 omega (lambda = (-73.7 +- 37.9 i) omega^2), one
+//               spacing from the corner of the loaded and the free top edge; the run with the closure iterated 30
+//               times per step measures 2.15 (at n = 41: 4.23 against 4.25, by hand, 4 minutes per spectrum). The
+//               un-lagged operator grows at nu = 0.3 too (0.81 at 21, 1.56 at 41), which the lagged closure does not
+//               show; the variational closure's fastest is 0.07 (a slow pair near the symmetry edge x = 0).
 // fem.csv: the same square quarter sheet by Q4 plane-stress finite elements (scenes/fem_hole.hpp), meshes
 // m = 32 ... 256: the linear reference (Heywood's long-strip formula is 11% below this geometry's value).
 // history.csv: the smoothed hole stress, the largest particle stress and speed against time for every run.
@@ -83,6 +90,7 @@ int main(int argc, char** argv) {
   std::vector<int> fem_m{32, 64, 128, 256};
   std::vector<int> edge_ns{41, 81, 161};
   int edge_n = 81;
+  int eigen_n = 21;
   scenes::HoleParams p;
   p.variational = false;
   p.settle = 6;
@@ -93,6 +101,7 @@ int main(int argc, char** argv) {
   d.param("gamma-n", gamma_n, "particles along a side of the gamma sweep").positive();
   d.param("linear-n", linear_n, "particles along a side of the linear (Hooke) run; 0 = none").non_negative();
   d.param("edge-n", edge_ns, "particles along a side of the edge-stability runs at the default step; 0 = none").non_negative();
+  d.param("edge-eigen-n", eigen_n, "particles along a side of the spectrum of the linearised operator (dense: ~6 s at 21, ~4 min at 41); 0 = none").non_negative();
   d.param("edge-variants-n", edge_n, "particles along a side of the edge-stability variants (step, passes, nu, closure)").positive();
   d.param("fem-m", fem_m, "finite element meshes of the linear reference: 2m x m elements (m along the radius)").positive();
   d.param("hourglass", p.hourglass, "zero-energy-mode control gamma of the study (TlConfig2D::hourglass; CHOSEN)").non_negative();
@@ -245,5 +254,34 @@ int main(int argc, char** argv) {
     variant("variational", "growth rate / omega, variational closure", [](auto& q) { q.variational = true; });
     d.value("edge_rate_change_third_step", g_dt - rate_default, "rate at dt / 3 minus at dt (a lag's would be < 0)");
     d.value("edge_rate_change_passes3", g_it - rate_default, "rate with the closure iterated minus lagged (a lag's would be < 0)");
+
+    // The mechanism by the spectrum (scenes::edge_spectrum): the un-lagged closure's linearised operator J of
+    // u'' = J u, and the same step run with the closure iterated to its fixed point (30 passes), whose measured
+    // rate the largest Re sqrt(lambda) must predict if the growth is J's eigenmode (not the time integration).
+    if (eigen_n > 0) {
+      scenes::HoleParams q = e;
+      q.n = eigen_n;
+      q.closure_passes = 30;
+      auto spectrum = [&](const std::string& name, const std::string& note, auto&& set) {
+        scenes::HoleParams r = q;
+        set(r);
+        const auto sp = scenes::edge_spectrum(r);
+        d.value("edge_eigen_rate" + name, sp.rate, "largest Re sqrt(lambda) / omega of the linearised operator, n = " +
+                std::to_string(eigen_n) + note);
+        return sp;
+      };
+      const auto sp = spectrum("", ", nu = 0.49", [](auto&) {});
+      spectrum("_nu0.3", ", nu = 0.3", [](auto& r) { r.nu = 0.3; });
+      spectrum("_variational", ", variational closure", [](auto& r) { r.variational = true; });
+      const double ps = q.a / (q.n - 1);
+      d.value("edge_eigen_growing_share", static_cast<double>(sp.growing) / sp.dof, "share of the eigenvalues with a growing root, nu = 0.49");
+      d.value("edge_eigen_lambda_re", sp.lambda_re, "the fastest mode's lambda / omega^2, real part");
+      d.value("edge_eigen_lambda_im", sp.lambda_im, "its |imaginary part| / omega^2");
+      d.value("edge_eigen_corner_distance_ps", (sp.where - sph::Vec2(q.a, q.a)).norm() / ps,
+              "distance of the fastest mode's largest amplitude from the corner of the loaded and the free edge, in spacings");
+      const double g30 = edge("passes30_n" + std::to_string(eigen_n), q);
+      d.value("edge_rate_passes30", g30, "measured growth rate / omega, closure iterated 30 times per step, n = " + std::to_string(eigen_n));
+      d.value("edge_eigen_over_measured", sp.rate / g30, "predicted (spectrum) over measured (dynamic run) growth rate");
+    }
   });
 }

@@ -1,8 +1,14 @@
 #include "ismail2009/scenes/hole.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <stdexcept>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
 
 #include "core/materials.hpp"
 #include "core/run_loop.hpp"
@@ -132,6 +138,68 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
     if (snapshot) snapshot(body, body.time());
   }
   return r;
+}
+
+EdgeSpectrum edge_spectrum(const HoleParams& p) {
+  const auto start = std::chrono::steady_clock::now();
+  const double ps = p.a / (p.n - 1);
+  const sph::Lame m = sph::lame_from_young_poisson(p.E, p.nu);
+  const double cL = sph::longitudinal_wave_speed(m, p.rho), cT = sph::transverse_wave_speed(m, p.rho);
+  const double omega = M_PI * cT / (4.0 * p.a);  // as run_hole
+  auto zero = [](const Vec2&, double) { return 0.0; };
+  const auto cond = sph::boundary_condition;
+  // run_hole's conditions with the load off (the operator is linear: the load only shifts the state).
+  std::vector<sph::BoundaryCondition2D> conds{cond(true, zero, false, zero), cond(false, zero, true, zero),
+                                              cond(false, zero, false, zero), cond(false, zero, false, zero)};
+  auto cfg = make_body(quarter_hole_domain(p.a, p.R, 0, 1, 2, 3, 3), conds, ps, p.h_over_ps);
+  cfg.rho = p.rho;
+  cfg.lame = m;
+  cfg.closure = p.variational ? sph::TlConfig2D::Closure::Variational : sph::TlConfig2D::Closure::GhostReflection;
+  cfg.damping = 0;
+  cfg.hourglass = 0;
+  cfg.closure_passes = p.closure_passes;
+  cfg.law = sph::TlConfig2D::Law::Hooke;
+  sph::TlSolver2D body(std::move(cfg));
+  const int nr = body.n_real(), N = 2 * nr;
+  // From u_0 = u_-1 = eps e_j one central-difference step gives u_1 = u_0 + dt^2 J u_0. A component the step
+  // pins (Dirichlet) comes back as 0 and is not a degree of freedom.
+  const double dt = 0.05 * body.h() / cL, eps = 1e-6 * ps;
+  Eigen::MatrixXd J(N, N);
+  std::vector<int> free_dof;
+  for (int j = 0; j < N; ++j) {
+    const int pj = j / 2, cj = j % 2;
+    const Vec2 Xj = body.X(pj);
+    body.set_initial_displacement([&](const Vec2& X) {
+      Vec2 u = Vec2::Zero();
+      if ((X - Xj).norm() < 1e-9 * p.a) u[cj] = eps;
+      return u;
+    });
+    body.step(dt);
+    for (int i = 0; i < nr; ++i)
+      for (int c = 0; c < 2; ++c) J(2 * i + c, j) = (body.u(i)[c] - (i == pj && c == cj ? eps : 0.0)) / (dt * dt * eps);
+    if (std::abs(body.u(pj)[cj] - eps) < 0.5 * eps) free_dof.push_back(j);
+  }
+  const int F = static_cast<int>(free_dof.size());
+  Eigen::MatrixXd K(F, F);
+  for (int r = 0; r < F; ++r)
+    for (int c = 0; c < F; ++c) K(r, c) = J(free_dof[r], free_dof[c]);
+  Eigen::EigenSolver<Eigen::MatrixXd> es(K, true);
+  EdgeSpectrum out;
+  out.dof = F;
+  int worst = 0;
+  for (int k = 0; k < F; ++k) {
+    const double rate = std::abs(std::sqrt(es.eigenvalues()[k]).real()) / omega;
+    if (rate > 1e-6) ++out.growing;
+    if (rate > out.rate) out.rate = rate, worst = k;
+  }
+  out.lambda_re = es.eigenvalues()[worst].real() / (omega * omega);
+  out.lambda_im = std::abs(es.eigenvalues()[worst].imag()) / (omega * omega);
+  const Eigen::VectorXcd v = es.eigenvectors().col(worst);
+  std::vector<double> amp(nr, 0.0);
+  for (int r = 0; r < F; ++r) amp[free_dof[r] / 2] += std::norm(v[r]);
+  out.where = body.X(static_cast<int>(std::max_element(amp.begin(), amp.end()) - amp.begin()));
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
 }
 
 }  // namespace scenes

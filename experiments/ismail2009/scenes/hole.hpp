@@ -61,6 +61,21 @@ struct HoleResult {
 HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fractions = {},
                     const std::function<void(const sph::TlSolver2D&, double)>& snapshot = nullptr);
 
+/// The spectrum of the sheet's linearised acceleration operator a = J u (issue 15 b): Hooke, no load, no damping,
+/// no control; J by columns (one step of a unit-perturbed state, the closure converged for it). u'' = J u grows
+/// unless an eigenvalue lambda is real and <= 0, at the rate Re sqrt(lambda). The initial state's closure is
+/// converged (TlSolver2D::set_initial_displacement), so J is the UN-LAGGED closure's operator whatever
+/// closure_passes is. Dense eigenvalues: O((2 n^2)^3), ~6 s at n = 21, ~4 min at 41.
+struct EdgeSpectrum {
+  int dof = 0;            ///< free displacement components
+  int growing = 0;        ///< eigenvalues with Re sqrt(lambda) > 1e-6 omega (complex, or real positive)
+  double rate = 0;        ///< largest Re sqrt(lambda), in omega
+  double lambda_re = 0, lambda_im = 0;  ///< that eigenvalue, in omega^2
+  sph::Vec2 where = sph::Vec2::Zero();  ///< reference position of that mode's largest amplitude
+  double seconds = 0;
+};
+EdgeSpectrum edge_spectrum(const HoleParams& p);
+
 /// The maximum principal value of a symmetric 2 x 2 stress.
 double max_principal(const sph::Tensor2& T);
 
