@@ -26,10 +26,33 @@ double max_principal(const sph::Tensor2& T) {
 
 double heywood_gross_concentration(double q) { return (2.0 + std::pow(1.0 - q, 3)) / (1.0 - q); }
 
+namespace {
+
+/// The body of the sheet p, the loaded edge's traction `load` (x, t); damping in units of omega.
+template <class Load>
+sph::TlConfig2D hole_body(const HoleParams& p, const Load& load, double omega) {
+  auto zero = [](const Vec2&, double) { return 0.0; };
+  const auto cond = sph::boundary_condition;
+  // Conditions: 0 symmetry x = 0 (u1 = 0, t2 = 0), 1 symmetry y = 0 (u2 = 0, t1 = 0), 2 loaded edge x = a
+  // (t1 = traction, t2 = 0), 3 free (top edge and hole).
+  std::vector<sph::BoundaryCondition2D> conds{cond(true, zero, false, zero), cond(false, zero, true, zero),
+                                              cond(false, load, false, zero), cond(false, zero, false, zero)};
+  auto cfg = make_body(quarter_hole_domain(p.a, p.R, 0, 1, 2, 3, 3), conds, p.a / (p.n - 1), p.h_over_ps);
+  cfg.rho = p.rho;
+  cfg.lame = sph::lame_from_young_poisson(p.E, p.nu);
+  cfg.closure = p.variational ? sph::TlConfig2D::Closure::Variational : sph::TlConfig2D::Closure::GhostReflection;
+  cfg.damping = p.damping * omega;
+  cfg.hourglass = p.hourglass;
+  cfg.closure_passes = p.closure_passes;
+  cfg.law = p.hooke ? sph::TlConfig2D::Law::Hooke : sph::TlConfig2D::Law::NeoHookean;
+  return cfg;
+}
+
+}  // namespace
+
 HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fractions,
                     const std::function<void(const sph::TlSolver2D&, double)>& snapshot) {
   if (p.n < 5) throw std::invalid_argument("run_hole: n >= 5");
-  const double ps = p.a / (p.n - 1);
   const sph::Lame m = sph::lame_from_young_poisson(p.E, p.nu);
   const double cL = sph::longitudinal_wave_speed(m, p.rho), cT = sph::transverse_wave_speed(m, p.rho);
   const double t_ramp = p.ramp_transits * p.a / cT;
@@ -37,26 +60,11 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   // proportional damping (HoleParams::damping, 4 omega) brings it to rest in a few periods and holds down the
   // reflection closure's weak edge instability (CHOSEN; the thesis's sheet 'comes to rest' without saying how).
   const double omega = M_PI * cT / (4.0 * p.a), t_end = t_ramp + p.settle / omega;
-  auto zero = [](const Vec2&, double) { return 0.0; };
   auto load = [=](const Vec2&, double t) {
     const double s = std::min(t / t_ramp, 1.0);
     return p.traction * (s < 1.0 ? std::sin(0.5 * M_PI * s) * std::sin(0.5 * M_PI * s) : 1.0);
   };
-  const auto cond = sph::boundary_condition;
-  // Conditions: 0 symmetry x = 0 (u1 = 0, t2 = 0), 1 symmetry y = 0 (u2 = 0, t1 = 0), 2 loaded edge x = a
-  // (t1 = traction, t2 = 0), 3 free (top edge and hole).
-  std::vector<sph::BoundaryCondition2D> conds{cond(true, zero, false, zero), cond(false, zero, true, zero),
-                                              cond(false, load, false, zero), cond(false, zero, false, zero)};
-  auto dom = quarter_hole_domain(p.a, p.R, 0, 1, 2, 3, 3);
-  auto cfg = make_body(dom, conds, ps, p.h_over_ps);
-  cfg.rho = p.rho;
-  cfg.lame = m;
-  cfg.closure = p.variational ? sph::TlConfig2D::Closure::Variational : sph::TlConfig2D::Closure::GhostReflection;
-  cfg.damping = p.damping * omega;
-  cfg.hourglass = p.hourglass;
-  cfg.closure_passes = p.closure_passes;
-  cfg.law = p.hooke ? sph::TlConfig2D::Law::Hooke : sph::TlConfig2D::Law::NeoHookean;
-  sph::TlSolver2D body(std::move(cfg));
+  sph::TlSolver2D body(hole_body(p, load, omega));
   HoleResult r;
   r.particles = body.n_real();
   r.build_s = body.build_seconds();
@@ -146,20 +154,12 @@ EdgeSpectrum edge_spectrum(const HoleParams& p) {
   const sph::Lame m = sph::lame_from_young_poisson(p.E, p.nu);
   const double cL = sph::longitudinal_wave_speed(m, p.rho), cT = sph::transverse_wave_speed(m, p.rho);
   const double omega = M_PI * cT / (4.0 * p.a);  // as run_hole
-  auto zero = [](const Vec2&, double) { return 0.0; };
-  const auto cond = sph::boundary_condition;
-  // run_hole's conditions with the load off (the operator is linear: the load only shifts the state).
-  std::vector<sph::BoundaryCondition2D> conds{cond(true, zero, false, zero), cond(false, zero, true, zero),
-                                              cond(false, zero, false, zero), cond(false, zero, false, zero)};
-  auto cfg = make_body(quarter_hole_domain(p.a, p.R, 0, 1, 2, 3, 3), conds, ps, p.h_over_ps);
-  cfg.rho = p.rho;
-  cfg.lame = m;
-  cfg.closure = p.variational ? sph::TlConfig2D::Closure::Variational : sph::TlConfig2D::Closure::GhostReflection;
-  cfg.damping = 0;
-  cfg.hourglass = 0;
-  cfg.closure_passes = p.closure_passes;
-  cfg.law = sph::TlConfig2D::Law::Hooke;
-  sph::TlSolver2D body(std::move(cfg));
+  // run_hole's body, linear, undamped, uncontrolled and unloaded (the operator is linear: a load only shifts the state).
+  HoleParams q = p;
+  q.hooke = true;
+  q.damping = 0;
+  q.hourglass = 0;
+  sph::TlSolver2D body(hole_body(q, [](const Vec2&, double) { return 0.0; }, omega));
   const int nr = body.n_real(), N = 2 * nr;
   // From u_0 = u_-1 = eps e_j one central-difference step gives u_1 = u_0 + dt^2 J u_0. A component the step
   // pins (Dirichlet) comes back as 0 and is not a degree of freedom.
