@@ -39,6 +39,9 @@ struct PairList {
   std::vector<double> W;             ///< W(r_ab, h)
   std::vector<double> F;             ///< F_ab with grad_a W_ab = dx F_ab (Gray et al. 2001 eq 3.2)
   std::vector<std::uint32_t> active; ///< number of pairs inside the support, per particle
+  /// Per particle, 1 + the largest neighbour index among its pairs (0 without pairs): with a half list, the
+  /// particles a block of rows reaches are [first row, max reach), found from the rows instead of the pairs.
+  std::vector<std::uint32_t> reach;
   long collections = 0;              ///< how often the candidates were re-collected (diagnostics)
   /// Every pair once, in the row of its lower index (b > a), for formulations that add a pair's terms to
   /// both of its particles; otherwise every pair twice (a->b and b->a), for those that gather.
@@ -109,6 +112,7 @@ struct PairList {
         W.resize(total);
         F.resize(total);
         active.resize(n);
+        reach.resize(n);
       }
       std::copy(buffer.begin(), buffer.end(), cand.begin() + start[begin]);
       buffers_[t].swap(buffer);
@@ -139,9 +143,10 @@ struct PairList {
     double* __restrict W_ = W.data();
     double* __restrict F_ = F.data();
     std::uint32_t* __restrict active_ = active.data();
+    std::uint32_t* __restrict reach_ = reach.data();
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long a = 0; a < n; ++a) {
-      std::uint32_t j = start_[a];
+      std::uint32_t j = start_[a], far = 0;
       const Vec2 xa = x_[a];
       for (std::uint32_t k = start_[a], end = start_[a + 1]; k < end; ++k) {
         const std::uint32_t c = cand_[k];
@@ -155,9 +160,11 @@ struct PairList {
         dx_[j] = d;
         W_[j] = w;
         F_[j] = f;
+        far = std::max(far, c + 1);
         ++j;
       }
       active_[a] = j - start_[a];
+      reach_[a] = far;
     }
   }
 
@@ -184,11 +191,13 @@ struct PairList {
     double* __restrict W_ = W.data();
     double* __restrict F_ = F.data();
     std::uint32_t* __restrict active_ = active.data();
+    std::uint32_t* __restrict reach_ = reach.data();
     const __m512i lo = _mm512_setr_epi64(0, 8, 1, 9, 2, 10, 3, 11), hi = _mm512_setr_epi64(4, 12, 5, 13, 6, 14, 7, 15);
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long a = 0; a < n; ++a) {
       std::uint32_t j = start_[a];
       const __m512d xa = _mm512_set1_pd(xd[2 * a]), ya = _mm512_set1_pd(xd[2 * a + 1]);
+      __m256i far = _mm256_setzero_si256();  // 1 + the largest kept neighbour, per lane
       for (std::uint32_t k = start_[a], end = start_[a + 1]; k < end; k += 8) {
         const __mmask8 live = end - k >= 8 ? 0xff : static_cast<__mmask8>((1u << (end - k)) - 1u);
         const __m256i c = _mm256_maskz_loadu_epi32(live, cand_ + k);
@@ -206,6 +215,7 @@ struct PairList {
         keep &= ~(_mm512_cmp_pd_mask(w, zero, _CMP_EQ_OQ) & _mm512_cmp_pd_mask(f, zero, _CMP_EQ_OQ));
         const int kept = __builtin_popcount(keep);
         _mm256_mask_compressstoreu_epi32(b_ + j, keep, c);
+        far = _mm256_mask_max_epu32(far, keep, far, _mm256_add_epi32(c, _mm256_set1_epi32(1)));
         _mm512_mask_compressstoreu_pd(W_ + j, keep, w);
         _mm512_mask_compressstoreu_pd(F_ + j, keep, f);
         const __m512d cx = _mm512_maskz_compress_pd(keep, dxv), cy = _mm512_maskz_compress_pd(keep, dyv);
@@ -215,6 +225,9 @@ struct PairList {
         j += kept;
       }
       active_[a] = j - start_[a];
+      alignas(32) std::uint32_t lanes[8];
+      _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), far);
+      reach_[a] = *std::max_element(lanes, lanes + 8);
     }
   }
 #endif

@@ -69,10 +69,20 @@ void GraySolver::return_to_yield_surface() {
 }
 
 void GraySolver::check_state() const {
-  const std::size_t bad = first_bad_particle(body_.size(), [this](std::size_t a) {
-    const bool finite = body_.x[a].allFinite() && body_.v[a].allFinite() && std::isfinite(body_.rho[a]) &&
-                        body_.S[a].allFinite();
-    return !finite || body_.rho[a] < 0.05 * p_.rho0 || body_.v[a].norm() > 100.0 * p_.c0;
+  // Branch-free on plain arrays, so that the OR over the particles (first_bad_particle) vectorises (three checks a
+  // step were 3% of a plate run): a value times zero is zero exactly when the value is finite (inf * 0 and
+  // NaN * 0 are NaN), a NaN fails every comparison, and |v| > v_max is tested as |v|^2 > v_max^2 (the same
+  // decision up to the rounding of the square root).
+  const double* x = body_.x.data()->data();
+  const double* v = body_.v.data()->data();
+  const double* rho = body_.rho.data();
+  const double* S = body_.S.data()->data();
+  const double rho_min = 0.05 * p_.rho0, v_max = 100.0 * p_.c0, v_max2 = v_max * v_max;
+  const std::size_t bad = first_bad_particle(body_.size(), [=](std::size_t a) {
+    const double zero = 0.0 * x[2 * a] + 0.0 * x[2 * a + 1] + 0.0 * v[2 * a] + 0.0 * v[2 * a + 1] + 0.0 * rho[a] +
+                        0.0 * S[4 * a] + 0.0 * S[4 * a + 1] + 0.0 * S[4 * a + 2] + 0.0 * S[4 * a + 3];
+    const double v2 = v[2 * a] * v[2 * a] + v[2 * a + 1] * v[2 * a + 1];
+    return !(zero == 0.0) | (rho[a] < rho_min) | (v2 > v_max2);
   });
   if (bad == body_.size()) return;
   std::ostringstream what;
