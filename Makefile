@@ -3,7 +3,7 @@
 #   make test      declaration check -> deps -> build -> GoogleTest (ctest) -> quick smoke run of every driver
 #                  -> quick check -> the report on the quick results
 # Other targets: make check, make paper, make bench, make bench-ab BASE=<rev>, make bench-peer, make sanitize, make deps, make clean, make check-targets,
-# make list-targets.
+# make list-targets, make archive, make verify-archive FILE=<tar.gz>, make test-paraview.
 # Make's dependency graph reruns a driver only when its binary changed. Threads: `figures` and `quick` run
 # NCORES drivers at a time, each single-threaded (OpenMP teams of two on 2 cores reach 1.3-1.8x, two
 # single-threaded drivers side by side ~2x; oversubscribed teams spin and run many times slower), the longest
@@ -37,7 +37,7 @@ DONE    = $(foreach t,$(ORDERED),$(RESULTS)/$(t)/.done)
 FIGS    = $(foreach t,$(ORDERED),$(FIGURES)/$(t).png)
 
 .PHONY: all figures test sanitize check paper bench bench-ab bench-peer deps build build-drivers configure ctest results plots quick clean help timings \
-        check-targets list-targets
+        check-targets list-targets archive verify-archive test-paraview
 .DEFAULT_GOAL := help
 
 help:
@@ -79,6 +79,17 @@ build-drivers: configure
 	cmake --build $(BUILD) -j $(JOBS) --target $(DRIVERS)
 
 # ---------------------------------------------------------------------------------------------------
+# Where the drivers run. LAUNCH empty: here. LAUNCH=slurm: every driver run is a Slurm job through srun (one
+# task, SRUN_CPUS CPUs, named sph-<target>), which blocks until the job ends, so Make stays the pipeline and
+# Slurm the engine; RUN_JOBS driver runs are in flight at a time (make figures LAUNCH=slurm RUN_JOBS=32 on a
+# cluster; the working directory must be on a file system the nodes share). make test-slurm tests it on a
+# single-node Slurm of this machine.
+LAUNCH    ?=
+RUN_JOBS  ?= $(NCORES)
+SRUN_CPUS ?= 1
+SRUN_FLAGS ?=
+launcher = $(if $(filter slurm,$(LAUNCH)),srun --ntasks=1 --cpus-per-task=$(SRUN_CPUS) --job-name=sph-$(1) --quiet $(SRUN_FLAGS) ,$(if $(LAUNCH),$(error LAUNCH=$(LAUNCH): only LAUNCH=slurm or empty)))
+
 # Drivers -> results/<target>/ -> plots/<target>.py -> figures/<target>.png
 define target_rules
 # SPH_RUN_CACHE: the store of runs that several targets need (work done once: a run is stepped once and its
@@ -86,7 +97,7 @@ define target_rules
 # column of timings.csv).
 $(RESULTS)/$(1)/.done: $(foreach d,$($(1)_DRIVERS),$(BIN)/$(d))
 	@mkdir -p $$(@D)
-	$(foreach d,$($(1)_DRIVERS),SPH_RUN_CACHE=$(RESULTS)/.run_cache $(BIN)/$(d) --out $$(@D) $($(1)_ARGS) $(DRIVER_FLAGS) &&) touch $$@
+	$(foreach d,$($(1)_DRIVERS),SPH_RUN_CACHE=$(RESULTS)/.run_cache $(call launcher,$(1))$(BIN)/$(d) --out $$(@D) $($(1)_ARGS) $(DRIVER_FLAGS) &&) touch $$@
 $(FIGURES)/$(1).png: plots/$(1).py plots/plotstyle.py $(RESULTS)/$(1)/.done
 	@mkdir -p $(FIGURES)
 	$(PY) plots/$(1).py --results $(RESULTS)/$(1) --figures $(FIGURES)
@@ -104,7 +115,7 @@ $(RESULTS)/check.csv: $(DONE) reference/check.py $(wildcard reference/*.csv)
 # the check fails (the report shows the FAIL rows).
 figures: deps build-drivers
 	@date +%s > $(RESULTS)/.figures_start 2>/dev/null || { mkdir -p $(RESULTS); date +%s > $(RESULTS)/.figures_start; }
-	OMP_NUM_THREADS=1 $(MAKE) --no-print-directory -j $(NCORES) plots
+	OMP_NUM_THREADS=1 $(MAKE) --no-print-directory -j $(RUN_JOBS) plots
 	@status=0; $(MAKE) --no-print-directory check || status=$$?; \
 	  $(MAKE) --no-print-directory timings; \
 	  $(PY) paper/build_report.py --results $(RESULTS) --figures $(FIGURES) --reference reference \
@@ -126,13 +137,50 @@ ctest: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 quick:
-	OMP_NUM_THREADS=1 $(MAKE) --no-print-directory -j $(NCORES) RESULTS=results/quick FIGURES=results/quick/figures DRIVER_FLAGS=--quick plots
+	OMP_NUM_THREADS=1 $(MAKE) --no-print-directory -j $(RUN_JOBS) RESULTS=results/quick FIGURES=results/quick/figures DRIVER_FLAGS=--quick plots
 	$(MAKE) --no-print-directory RESULTS=results/quick CHECK_FLAGS=--quick check
 	$(MAKE) --no-print-directory RESULTS=results/quick timings
 	$(PY) paper/build_report.py --results results/quick --figures results/quick/figures --reference reference \
 	  --out results/quick/report/index.html
 
 test: deps check-targets build ctest quick
+
+# A citable archive of one reproduction (tools/archive.py): results (without the store of reusable runs),
+# figures, the report, PROVENANCE.json (code version and uncommitted changes, every driver command line, the
+# Debian package versions, compiler, machine) and SHA256SUMS of every file; it prints the tarball's own SHA-256,
+# to cite with it. Of the quick pipeline: make archive RESULTS=results/quick FIGURES=results/quick/figures
+# REPORT=results/quick/report/index.html. make verify-archive FILE=<tar.gz> [SHA256=<hex>] checks every file.
+ARCHIVE ?= reproduction-$(shell git rev-parse --short HEAD 2>/dev/null || echo unknown).tar.gz
+REPORT  ?= paper/build/index.html
+ARCHIVE_PACKAGES := $(DEB_PACKAGES) libhdf5-103-1 libgomp1 python3-paraview slurm-wlm munge
+archive:
+	$(PY) tools/archive.py create --results $(RESULTS) --figures $(FIGURES) --report $(REPORT) --out $(ARCHIVE) \
+	  --packages $(ARCHIVE_PACKAGES)
+verify-archive:
+	@[ -n "$(FILE)" ] || { echo "make verify-archive: give the archive, FILE=<file.tar.gz> [SHA256=<hex>]"; exit 2; }
+	$(PY) tools/archive.py verify $(FILE) $(if $(SHA256),--sha256 $(SHA256))
+
+# Our HDF5 + XDMF snapshots opened by ParaView's own XDMF reader (Debian python3-paraview, installed here if
+# missing: ~90 MB, about a minute): a known series written by the library, exactly, and the hexagon's series of
+# the last quick or full run if there is one (tests/test_paraview.py).
+PV_SERIES = $(firstword $(patsubst %/,%,$(dir $(wildcard results/quick/H-fig4/*.xdmf results/H-fig4/*.xdmf))))
+test-paraview: deps configure
+	@dpkg-query -W -f='$${Status}' python3-paraview 2>/dev/null | grep -q 'install ok installed' || { \
+	  echo "make test-paraview: installing python3-paraview"; SUDO=; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends python3-paraview; }
+	cmake --build $(BUILD) -j $(JOBS) --target snapshot_sample
+	$(PY) tests/test_paraview.py --sample $(BIN)/snapshot_sample $(if $(PV_SERIES),--series $(PV_SERIES))
+
+# The Slurm launcher tested for real (tests/test_slurm.sh): a single-node Slurm of this machine
+# (tools/slurm_single_node.sh; Debian slurm-wlm and munge, installed here if missing, ~40 packages, ~15 s), the
+# quick pipeline through it into results/slurm (every driver run a job), the quick check, every driver run
+# found as a Slurm job that exited 0, and the values identical to those of the last local quick run if there
+# is one (results/quick). Needs root.
+test-slurm: deps build-drivers
+	@missing=$$(for p in slurm-wlm munge; do dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then echo "make test-slurm: installing" $$missing; SUDO=; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; fi
+	tests/test_slurm.sh
 
 # The library, the unit tests and the drivers built with AddressSanitizer and UndefinedBehaviorSanitizer
 # (build-sanitize/, -O1): ctest and every driver's quick run under them; any report fails the make. Not part of
