@@ -37,7 +37,7 @@ DONE    = $(foreach t,$(ORDERED),$(RESULTS)/$(t)/.done)
 FIGS    = $(foreach t,$(ORDERED),$(FIGURES)/$(t).png)
 
 .PHONY: all figures test sanitize check paper bench bench-ab bench-peer deps build build-drivers configure ctest results plots quick clean help timings \
-        check-targets list-targets archive verify-archive test-paraview
+        check-targets list-targets list-runs archive verify-archive test-paraview
 .DEFAULT_GOAL := help
 
 help:
@@ -90,12 +90,30 @@ SRUN_CPUS ?= 1
 SRUN_FLAGS ?=
 launcher = $(if $(filter slurm,$(LAUNCH)),srun --ntasks=1 --cpus-per-task=$(SRUN_CPUS) --job-name=sph-$(1) --quiet $(SRUN_FLAGS) ,$(if $(LAUNCH),$(error LAUNCH=$(LAUNCH): only LAUNCH=slurm or empty)))
 
+# The unit of work. A target that declares T_RUNS (experiments/targets.mk) steps each of those simulation runs
+# as a job of its own: its driver with T_RUN_ARGS <run> into $(RESULTS)/.runs/T/<run>/, which leaves the run in
+# the store of runs (SPH_RUN_CACHE); then the target's own driver invocation finds every run there and only
+# collects (bit for bit the numbers stepping gives: plate_run_cache.hpp). So Make runs the runs side by side
+# (RUN_JOBS) and LAUNCH=slurm makes each a Slurm job. The store serves only a clean code version, so from a
+# checkout with uncommitted changes the runs are not split (they would be stepped twice).
+CLEAN_TREE := $(shell git diff --quiet HEAD -- 2>/dev/null && echo yes)
+run_dones = $(if $(CLEAN_TREE),$(foreach r,$($(1)_RUNS),$(RESULTS)/.runs/$(1)/$(r)/.done))
+define run_rules
+$(RESULTS)/.runs/$(1)/$(2)/.done: $(BIN)/$($(1)_DRIVERS)
+	@mkdir -p $$(@D)
+	SPH_RUN_CACHE=$(RESULTS)/.run_cache $(call launcher,$(1)-$(2))$(BIN)/$($(1)_DRIVERS) --out $$(@D) $($(1)_ARGS) $(DRIVER_FLAGS) $($(1)_RUN_ARGS) $(2) && touch $$@
+endef
+$(foreach t,$(TARGETS),$(foreach r,$($(t)_RUNS),$(eval $(call run_rules,$(t),$(r)))))
+# make -s list-runs: one line per split target, target;runs (tests/test_slurm.sh counts the jobs with it).
+list-runs:
+	@: $(foreach t,$(TARGETS),$(if $(call run_dones,$(t)),$(info $(t);$($(t)_RUNS))))
+
 # Drivers -> results/<target>/ -> plots/<target>.py -> figures/<target>.png
 define target_rules
 # SPH_RUN_CACHE: the store of runs that several targets need (work done once: a run is stepped once and its
 # prefixes reused, keyed by its full parameter set and code version; the reuse is the reused_particle_steps
 # column of timings.csv).
-$(RESULTS)/$(1)/.done: $(foreach d,$($(1)_DRIVERS),$(BIN)/$(d))
+$(RESULTS)/$(1)/.done: $(foreach d,$($(1)_DRIVERS),$(BIN)/$(d)) $(call run_dones,$(1))
 	@mkdir -p $$(@D)
 	$(foreach d,$($(1)_DRIVERS),SPH_RUN_CACHE=$(RESULTS)/.run_cache $(call launcher,$(1))$(BIN)/$(d) --out $$(@D) $($(1)_ARGS) $(DRIVER_FLAGS) &&) touch $$@
 $(FIGURES)/$(1).png: plots/$(1).py plots/plotstyle.py $(RESULTS)/$(1)/.done

@@ -3,6 +3,10 @@
 # paper/build_report.py and tests/check_targets.py read it through experiments/targets.py.
 # For a target T:  TARGETS += T ;  T_DRIVERS := driver names (experiments/<paper>/<driver>.cpp)
 # Optional:        T_ARGS := extra command-line arguments for T's drivers (quick runs add --quick)
+#                  T_RUNS := names of T's simulation runs to step as jobs of their own, and T_RUN_ARGS := the
+#                  driver's arguments that select one of them (the name follows); T's driver then collects them
+#                  from the store of runs (Makefile, run_rules). Only for a single-driver T whose runs the store
+#                  serves and that no other target reuses before T has run.
 # Each driver writes into results/T/; plots/T.py turns results/T/ into figures/T*.png. A declared T also
 # needs reference/T.csv (its published numbers) and a row in paper/targets.csv (the report's title, work
 # and description); `make check-targets` (run first by `make test`) checks all of it.
@@ -31,6 +35,10 @@ G-tab1_DRIVERS := gray2001_table1_2_plate_periods
 G-tab1_ARGS := --table 1
 G-tab2_DRIVERS := gray2001_table1_2_plate_periods
 G-tab2_ARGS := --table 2
+# Table 2's nine rows (each with its same-n run: ~280 s each of 2500) as jobs of their own; the coarse reference
+# (Fig 4's n = 10 plate) stays with the collecting run.
+G-tab2_RUNS := H1_Vf0.01_mu0.22 H1_Vf0.03_mu0.22 H1_Vf0.05_mu0.22 H1_Vf0.01_mu0.3 H1_Vf0.03_mu0.3 H1_Vf0.05_mu0.3 H1_Vf0.01_mu0.6 H1_Vf0.03_mu0.6 H1_Vf0.05_mu0.6
+G-tab2_RUN_ARGS := --coarse-reference false --rows
 G-fig1_DRIVERS := gray2001_fig1_periodic_array
 G-fig2_DRIVERS := gray2001_fig2_3_plate_fracture
 G-fig4_DRIVERS := gray2001_fig4_plate_resolution

@@ -7,6 +7,7 @@ of its own. The reader accepts only the lines the file's header describes and st
 (a Make construct it cannot evaluate would otherwise make Python and Make disagree silently):
 
     TARGETS += T ...                  T_DRIVERS := driver ...            T_ARGS := extra arguments
+    T_RUNS := run names               T_RUN_ARGS := arguments selecting one run (the run's name follows them)
     BENCH_DRIVERS += driver ...       blank lines, and '#' comments (also after a declaration)
 
 tests/check_targets.py also compares this reading with Make's own (`make -s list-targets`).
@@ -19,7 +20,7 @@ PATH = os.path.join(ROOT, "experiments", "targets.mk")
 
 _NAME = r"[A-Za-z0-9][A-Za-z0-9_.-]*"
 _APPEND = re.compile(r"^(TARGETS|BENCH_DRIVERS)\s*\+=\s*(.*)$")
-_ASSIGN = re.compile(rf"^({_NAME})_(DRIVERS|ARGS)\s*:=\s*(.*)$")
+_ASSIGN = re.compile(rf"^({_NAME}?)_(DRIVERS|ARGS|RUNS|RUN_ARGS)\s*:=\s*(.*)$")
 
 
 class DeclarationError(ValueError):
@@ -29,9 +30,10 @@ class DeclarationError(ValueError):
 class Target:
     def __init__(self, name):
         self.name, self.drivers, self.args = name, [], ""
+        self.runs, self.run_args = [], ""  # the simulation runs that are jobs of their own (Makefile: run_rules)
 
     def __repr__(self):
-        return f"Target({self.name!r}, drivers={self.drivers!r}, args={self.args!r})"
+        return f"Target({self.name!r}, drivers={self.drivers!r}, args={self.args!r}, runs={self.runs!r})"
 
 
 class Declaration:
@@ -87,9 +89,15 @@ def read(path=PATH):
         done.add((name, key))
         if key == "DRIVERS":
             targets[name].drivers = value.split()
-        else:
+        elif key == "ARGS":
             targets[name].args = value
+        elif key == "RUNS":
+            targets[name].runs = value.split()
+        else:
+            targets[name].run_args = value
     for t in targets.values():
         if not t.drivers:
             raise DeclarationError(f"{where}: target {t.name} has no {t.name}_DRIVERS")
+        if t.runs and (len(t.drivers) != 1 or not t.run_args):
+            raise DeclarationError(f"{where}: target {t.name} declares runs: it needs one driver and {t.name}_RUN_ARGS")
     return Declaration(list(targets.values()), bench, path)

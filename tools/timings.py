@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Merge the drivers' timing files into <results>/timings.csv and print the table.
 
-Every driver writes <results>/<target>/timing_<driver>.csv (target, driver, wall_s, particle_steps, threads,
+Every driver writes <results>/<target>/timing_<driver>.csv (a split target's runs <results>/.runs/<target>/<run>/) (target, driver, wall_s, particle_steps, threads,
 reused_particle_steps: the wall time of its run, the particle-steps its time loops took, and those it took from
 a stored run of another driver or target instead of stepping them: work done once, issue 13). This script
 collects them, sorted by wall time, adds the particle-steps per second, writes <results>/timings.csv and prints
@@ -19,9 +19,16 @@ def main():
     ap.add_argument("--results", default="results")
     args = ap.parse_args()
     rows = []
-    for path in sorted(glob.glob(os.path.join(args.results, "*", "timing_*.csv"))):
+    # The targets' driver runs, and the simulation runs of split targets (<results>/.runs/T/<run>/, Makefile
+    # run_rules), labelled T/<run>.
+    paths = [(p, None) for p in sorted(glob.glob(os.path.join(args.results, "*", "timing_*.csv")))]
+    paths += [(p, os.path.basename(os.path.dirname(p)))
+              for p in sorted(glob.glob(os.path.join(args.results, ".runs", "*", "*", "timing_*.csv")))]
+    for path, run in paths:
         with open(path) as f:
             for r in csv.DictReader(l for l in f if not l.startswith("#")):
+                if run:
+                    r["target"] = f"{r['target']}/{run}"
                 rows.append(r)
     if not rows:
         print(f"timings: no timing files under {args.results}")
