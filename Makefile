@@ -91,17 +91,19 @@ SRUN_FLAGS ?=
 launcher = $(if $(filter slurm,$(LAUNCH)),srun --ntasks=1 --cpus-per-task=$(SRUN_CPUS) --job-name=sph-$(1) --quiet $(SRUN_FLAGS) ,$(if $(LAUNCH),$(error LAUNCH=$(LAUNCH): only LAUNCH=slurm or empty)))
 
 # The unit of work. A target that declares T_RUNS (experiments/targets.mk) steps each of those simulation runs
-# as a job of its own: its driver with T_RUN_ARGS <run> into $(RESULTS)/.runs/T/<run>/, which leaves the run in
+# as a job of its own: its driver (T_RUN_DRIVER if T has several) with T_RUN_ARGS <run> into
+# $(RESULTS)/.runs/T/<run>/, which leaves the run in
 # the store of runs (SPH_RUN_CACHE); then the target's own driver invocation finds every run there and only
 # collects (bit for bit the numbers stepping gives: plate_run_cache.hpp). So Make runs the runs side by side
 # (RUN_JOBS) and LAUNCH=slurm makes each a Slurm job. The store serves only a clean code version, so from a
 # checkout with uncommitted changes the runs are not split (they would be stepped twice).
 CLEAN_TREE := $(shell git diff --quiet HEAD -- 2>/dev/null && echo yes)
 run_dones = $(if $(CLEAN_TREE),$(foreach r,$($(1)_RUNS),$(RESULTS)/.runs/$(1)/$(r)/.done))
+run_driver = $(or $($(1)_RUN_DRIVER),$($(1)_DRIVERS))
 define run_rules
-$(RESULTS)/.runs/$(1)/$(2)/.done: $(BIN)/$($(1)_DRIVERS)
+$(RESULTS)/.runs/$(1)/$(2)/.done: $(BIN)/$(call run_driver,$(1))
 	@mkdir -p $$(@D)
-	SPH_RUN_CACHE=$(RESULTS)/.run_cache $(call launcher,$(1)-$(2))$(BIN)/$($(1)_DRIVERS) --out $$(@D) $($(1)_ARGS) $(DRIVER_FLAGS) $($(1)_RUN_ARGS) $(2) && touch $$@
+	SPH_RUN_CACHE=$(RESULTS)/.run_cache $(call launcher,$(1)-$(2))$(BIN)/$(call run_driver,$(1)) --out $$(@D) $($(1)_ARGS) $(DRIVER_FLAGS) $($(1)_RUN_ARGS) $(2) && touch $$@
 endef
 $(foreach t,$(TARGETS),$(foreach r,$($(t)_RUNS),$(eval $(call run_rules,$(t),$(r)))))
 # make -s list-runs: one line per split target, target;runs (tests/test_slurm.sh counts the jobs with it).

@@ -8,6 +8,7 @@ of its own. The reader accepts only the lines the file's header describes and st
 
     TARGETS += T ...                  T_DRIVERS := driver ...            T_ARGS := extra arguments
     T_RUNS := run names               T_RUN_ARGS := arguments selecting one run (the run's name follows them)
+    T_RUN_DRIVER := the driver that steps the runs (when T has several)
     BENCH_DRIVERS += driver ...       blank lines, and '#' comments (also after a declaration)
 
 tests/check_targets.py also compares this reading with Make's own (`make -s list-targets`).
@@ -20,7 +21,7 @@ PATH = os.path.join(ROOT, "experiments", "targets.mk")
 
 _NAME = r"[A-Za-z0-9][A-Za-z0-9_.-]*"
 _APPEND = re.compile(r"^(TARGETS|BENCH_DRIVERS)\s*\+=\s*(.*)$")
-_ASSIGN = re.compile(rf"^({_NAME}?)_(DRIVERS|ARGS|RUNS|RUN_ARGS)\s*:=\s*(.*)$")
+_ASSIGN = re.compile(rf"^({_NAME}?)_(DRIVERS|ARGS|RUNS|RUN_ARGS|RUN_DRIVER)\s*:=\s*(.*)$")
 
 
 class DeclarationError(ValueError):
@@ -30,7 +31,7 @@ class DeclarationError(ValueError):
 class Target:
     def __init__(self, name):
         self.name, self.drivers, self.args = name, [], ""
-        self.runs, self.run_args = [], ""  # the simulation runs that are jobs of their own (Makefile: run_rules)
+        self.runs, self.run_args, self.run_driver = [], "", ""  # runs that are jobs of their own (Makefile: run_rules)
 
     def __repr__(self):
         return f"Target({self.name!r}, drivers={self.drivers!r}, args={self.args!r}, runs={self.runs!r})"
@@ -93,11 +94,16 @@ def read(path=PATH):
             targets[name].args = value
         elif key == "RUNS":
             targets[name].runs = value.split()
+        elif key == "RUN_DRIVER":
+            targets[name].run_driver = value
         else:
             targets[name].run_args = value
     for t in targets.values():
         if not t.drivers:
             raise DeclarationError(f"{where}: target {t.name} has no {t.name}_DRIVERS")
-        if t.runs and (len(t.drivers) != 1 or not t.run_args):
-            raise DeclarationError(f"{where}: target {t.name} declares runs: it needs one driver and {t.name}_RUN_ARGS")
+        if t.runs and not t.run_args:
+            raise DeclarationError(f"{where}: target {t.name} declares runs: it needs {t.name}_RUN_ARGS")
+        if t.runs and (t.run_driver not in t.drivers if t.run_driver else len(t.drivers) != 1):
+            raise DeclarationError(f"{where}: target {t.name} declares runs: {t.name}_RUN_DRIVER must name one of its "
+                                   f"drivers (required when it has several)")
     return Declaration(list(targets.values()), bench, path)

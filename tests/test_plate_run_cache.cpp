@@ -11,6 +11,7 @@
 
 #include "gray2001/scenes/plate_run.hpp"
 #include "gray2001/scenes/plate_run_cache.hpp"
+#include "run_store_fixture.hpp"
 
 namespace {
 
@@ -48,21 +49,9 @@ void expect_identical(const scenes::PlateRunResult& a, const scenes::PlateRunRes
   }
 }
 
-class PlateRunCache : public ::testing::Test {
+class PlateRunCache : public RunStoreTest {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / ("sph_plate_cache_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir_);
-    setenv("SPH_RUN_CACHE_ALLOW_DIRTY", "1", 1);
-  }
-  void TearDown() override {
-    unsetenv("SPH_RUN_CACHE");
-    unsetenv("SPH_RUN_CACHE_ALLOW_DIRTY");
-    std::filesystem::remove_all(dir_);
-  }
-  void store_on() { setenv("SPH_RUN_CACHE", dir_.c_str(), 1); }
-  void store_off() { unsetenv("SPH_RUN_CACHE"); }
-  std::filesystem::path dir_;
+  PlateRunCache() : RunStoreTest("plate_cache") {}
 };
 
 }  // namespace

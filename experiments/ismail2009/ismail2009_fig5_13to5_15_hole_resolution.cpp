@@ -50,11 +50,15 @@
 // m = 32 ... 256: the linear reference (Heywood's long-strip formula is 11% below this geometry's value).
 // history.csv: the smoothed hole stress, the largest particle stress and speed against time for every run.
 // About 17 minutes on one core, 13 on two. --quick: 11 and 21 per side.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "frame/driver.hpp"
+#include "frame/run_store.hpp"
 #include "ismail2009/scenes/fem_hole.hpp"
 #include "ismail2009/scenes/hole.hpp"
 
@@ -108,6 +112,11 @@ int main(int argc, char** argv) {
   d.param("settle", p.settle, "settling time after the ramp in 1/omega (CHOSEN)").non_negative();
   d.param("damping", p.damping, "mass-proportional damping in units of omega (CHOSEN)").non_negative();
   d.param("variational", p.variational, "boundary scheme: variational (true) or ghost reflection (false)");
+  std::vector<std::string> only;
+  d.param("runs", only, "step only these runs of the study (names as printed by --list-runs) into the store of runs "
+                        "(SPH_RUN_CACHE), for the run that collects the study (Makefile run_rules); nothing else is written");
+  bool list_runs = false;
+  d.param("list-runs", list_runs, "print the names of the study's runs and exit");
   return d.run(argc, argv, [&] {
     if (d.quick()) {
       if (!d.given("n")) ns = {11, 21};
@@ -118,12 +127,77 @@ int main(int argc, char** argv) {
       if (!d.given("edge-n")) edge_ns = {21};
       if (!d.given("edge-variants-n")) edge_n = 21;
     }
+    // The study's runs, named (the unit of a job: Makefile run_rules, experiments/targets.mk I-hole_RUNS). Every
+    // run is stepped (or served by the store) here, before the outputs, which are then written in the study's order.
+    const auto linear_edge = [&](scenes::HoleParams q) {  // issue 15 (b): Hooke at 1%, undamped, no control, 12/omega
+      q.hooke = true;
+      q.traction = 0.01 * p.traction;
+      q.damping = 0;
+      q.hourglass = 0;
+      q.settle = 12;
+      return q;
+    };
+    const bool edges = !edge_ns.empty() && edge_ns.front() != 0;
+    scenes::HoleParams e = p;  // the edge series' base: the study's sheet, then linear_edge
+    std::vector<std::pair<std::string, scenes::HoleParams>> plan;
+    auto plan_run = [&](const std::string& name, const scenes::HoleParams& q) {
+      for (const auto& [other, _] : plan)
+        if (other == name) return;  // the same run twice (e.g. edge-variants-n among edge-n)
+      plan.emplace_back(name, q);
+    };
+    for (int n : ns) { auto q = p; q.n = n; plan_run("controlled_n" + std::to_string(n), q); }
+    for (int n : plain_ns) { auto q = p; q.n = n; q.hourglass = 0; plan_run("plain_n" + std::to_string(n), q); }
+    for (double g : gammas) { auto q = p; q.n = gamma_n; q.hourglass = g; plan_run("gamma_g" + sph::format_number(g), q); }
+    if (linear_n > 0) {
+      auto q = p;
+      q.n = linear_n;
+      q.hooke = true;
+      q.traction = 0.01 * p.traction;  // small strain: the linear-elastic concentration
+      plan_run("linear_n" + std::to_string(linear_n), q);
+    }
+    auto edge_run_name = [](const std::string& series, int n) { return "edge_" + series + "_n" + std::to_string(n); };
+    auto edge_variant = [&](auto&& set) { scenes::HoleParams q = linear_edge(e); q.n = edge_n; set(q); return q; };
+    if (edges) {
+      for (int n : edge_ns) { auto q = linear_edge(e); q.n = n; plan_run(edge_run_name("resolution", n), q); }
+      { auto q = linear_edge(e); q.n = edge_n; plan_run(edge_run_name("resolution", edge_n), q); }
+      plan_run(edge_run_name("dt0.1", edge_n), edge_variant([](auto& q) { q.dt_factor = 0.1; }));
+      plan_run(edge_run_name("passes3", edge_n), edge_variant([](auto& q) { q.closure_passes = 3; }));
+      plan_run(edge_run_name("nu0.3", edge_n), edge_variant([](auto& q) { q.nu = 0.3; }));
+      plan_run(edge_run_name("variational", edge_n), edge_variant([](auto& q) { q.variational = true; }));
+      if (eigen_n > 0) {
+        auto q = linear_edge(e);
+        q.n = eigen_n;
+        q.closure_passes = 30;
+        plan_run(edge_run_name("passes30", eigen_n), q);
+      }
+    }
+    if (list_runs) {
+      for (const auto& [name, _] : plan) std::printf("%s\n", name.c_str());
+      return;
+    }
+    std::map<std::string, scenes::HoleResult> result;
+    if (!only.empty()) {
+      for (const auto& name : only) {
+        const auto it = std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == name; });
+        if (it == plan.end()) {  // e.g. a full-resolution run's name given to a --quick study
+          std::fprintf(stderr, "run %s is not in this study (see --list-runs): nothing to step\n", name.c_str());
+          continue;
+        }
+        if (sph::run_store_dir().empty())
+          std::fprintf(stderr, "run %s: the store of runs is off (SPH_RUN_CACHE unset or a dirty build): stepped for "
+                       "nothing\n", name.c_str());
+        scenes::run_hole(it->second);
+      }
+      return;
+    }
+    for (const auto& [name, q] : plan) result.emplace(name, scenes::run_hole(q));
     auto out = d.csv("resolution.csv", {"series", "n", "hourglass", "law", "traction_MPa", "particles", "steps", "wall_s", "build_s",
                                         "sigma1_hole_top_MPa", "peak_sigma1_MPa", "peak_sigma1_dynamic_MPa",
                                         "smoothed_sigma1_hole_top_MPa", "zigzag", "settle_change", "speed_rise", "rest_speed_ratio", "fastest_X", "fastest_Y"});
     auto hist = d.csv("history.csv", {"series", "n", "hourglass", "t", "smoothed_sigma1_hole_top_MPa", "peak_sigma1_MPa", "max_speed"});
-    auto run = [&](const std::string& series, const scenes::HoleParams& q) {
-      const auto r = scenes::run_hole(q);
+    auto run = [&](const std::string& series, const std::string& name) {
+      const scenes::HoleParams& q = std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == name; })->second;
+      const scenes::HoleResult& r = result.at(name);
       if (!r.finite)
         throw std::runtime_error("the sheet run became non-finite (" + series + ", n = " + std::to_string(q.n) + ", gamma = " +
                                  sph::format_number(q.hourglass) + ")");
@@ -155,9 +229,7 @@ int main(int argc, char** argv) {
     std::vector<double> top;
     double top_at_linear_n = 0;
     for (int n : ns) {
-      auto q = p;
-      q.n = n;
-      const auto r = run("controlled", q);
+      const auto r = run("controlled", "controlled_n" + std::to_string(n));
       top.push_back(r.smoothed_sigma1_hole_top / 1e6);
       if (n == linear_n) top_at_linear_n = r.smoothed_sigma1_hole_top;
       if (n == ns.back()) {
@@ -176,10 +248,7 @@ int main(int argc, char** argv) {
     write_richardson(d, ns, top);
     double plain_last = 0;
     for (int n : plain_ns) {
-      auto q = p;
-      q.n = n;
-      q.hourglass = 0;
-      const auto r = run("plain", q);
+      const auto r = run("plain", "plain_n" + std::to_string(n));
       plain_last = r.smoothed_sigma1_hole_top / 1e6;
       if (n == plain_ns.back()) {
         d.value("plain_sigma1_hole_top_MPa_finest", plain_last, "without the control, its finest run");
@@ -189,19 +258,10 @@ int main(int argc, char** argv) {
           if (ns[k] == n) d.value("control_bias_at_plain_finest", (top[k] - plain_last) / plain_last, "(controlled - plain) / plain, same n");
       }
     }
-    for (double g : gammas) {
-      auto q = p;
-      q.n = gamma_n;
-      q.hourglass = g;
-      run("gamma", q);
-    }
+    for (double g : gammas) run("gamma", "gamma_g" + sph::format_number(g));
     if (linear_n > 0) {
-      auto q = p;
-      q.n = linear_n;
-      q.hooke = true;
-      q.traction = 0.01 * p.traction;  // small strain: the linear-elastic concentration
-      const auto r = run("linear", q);
-      const double k_lin = r.smoothed_sigma1_hole_top / q.traction;
+      const auto r = run("linear", "linear_n" + std::to_string(linear_n));
+      const double k_lin = r.smoothed_sigma1_hole_top / (0.01 * p.traction);
       d.value("linear_concentration", k_lin, "Hooke at 1% of the load: smoothed (0, R) stress / traction");
       d.value("linear_over_heywood", k_lin / heywood, "the square sheet's linear concentration over the long strip's");
       if (!kf.empty()) d.value("linear_over_fem", k_lin / kf.back(), "linear SPH over linear finite elements, same geometry");
@@ -214,44 +274,37 @@ int main(int argc, char** argv) {
     // growth_rate, in omega) in the linear regime (Hooke, 1% of the load), without damping and without the
     // control, run to 12/omega: against resolution, the time step (a one-step lag would fade as dt -> 0),
     // the ghosts and gradient iterated within each step (towards the un-lagged closure), nu and the closure.
-    if (edge_ns.empty() || edge_ns.front() == 0) return;
+    if (!edges) return;
     auto ecsv = d.csv("edge_stability.csv", {"series", "n", "dt_factor", "closure_passes", "nu", "closure", "finite", "steps",
                                              "wall_s", "growth_rate", "fastest_X", "fastest_Y"});
-    auto edge = [&](const std::string& series, scenes::HoleParams q) {
-      q.hooke = true;
-      q.traction = 0.01 * p.traction;
-      q.damping = 0;
-      q.hourglass = 0;
-      q.settle = 12;
-      const auto r = scenes::run_hole(q);
+    // `series` names the run in edge_stability.csv; the run is the plan's edge_<run>_n<n>.
+    auto edge = [&](const std::string& series, int n, const std::string& run = "") {
+      const std::string name = edge_run_name(run.empty() ? series : run, n);
+      const scenes::HoleParams& q = std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == name; })->second;
+      const scenes::HoleResult& r = result.at(name);
       ecsv.row(series, q.n, q.dt_factor, q.closure_passes, q.nu, q.variational ? "variational" : "ghost_reflection",
                r.finite ? 1 : 0, r.steps, r.wall_s, r.growth_rate, r.fastest_X.x(), r.fastest_X.y());
       return r.growth_rate;
     };
-    scenes::HoleParams e = p;
     double rate_default = NAN, rate_finest = NAN;
     for (int n : edge_ns) {
-      e.n = n;
-      const double g = edge("resolution", e);
+      const double g = edge("resolution", n);
       d.value("edge_rate_n" + std::to_string(n), g, "growth rate / omega, undamped, dt = 0.3 h / c_L, nu = 0.49");
       if (n == edge_n) rate_default = g;
       rate_finest = g;
     }
     d.value("edge_least_damping_finest", 2 * rate_finest,
             "mass-proportional damping (in omega) that holds the finest edge run's mode: twice its growth rate");
-    e.n = edge_n;
-    if (std::isnan(rate_default)) rate_default = edge("resolution", e);
-    auto variant = [&](const std::string& name, const std::string& note, auto&& set) {
-      scenes::HoleParams q = e;
-      set(q);
-      const double g = edge(name, q);
+    if (std::isnan(rate_default)) rate_default = edge("resolution", edge_n);
+    auto variant = [&](const std::string& name, const std::string& note) {
+      const double g = edge(name, edge_n);
       d.value("edge_rate_" + name, g, note);
       return g;
     };
-    const double g_dt = variant("dt0.1", "growth rate / omega at a third of the step", [](auto& q) { q.dt_factor = 0.1; });
-    const double g_it = variant("passes3", "growth rate / omega, ghosts and gradient 3 times per step", [](auto& q) { q.closure_passes = 3; });
-    variant("nu0.3", "growth rate / omega at nu = 0.3", [](auto& q) { q.nu = 0.3; });
-    variant("variational", "growth rate / omega, variational closure", [](auto& q) { q.variational = true; });
+    const double g_dt = variant("dt0.1", "growth rate / omega at a third of the step");
+    const double g_it = variant("passes3", "growth rate / omega, ghosts and gradient 3 times per step");
+    variant("nu0.3", "growth rate / omega at nu = 0.3");
+    variant("variational", "growth rate / omega, variational closure");
     d.value("edge_rate_change_third_step", g_dt - rate_default, "rate at dt / 3 minus at dt (a lag's would be < 0)");
     d.value("edge_rate_change_passes3", g_it - rate_default, "rate with the closure iterated minus lagged (a lag's would be < 0)");
 
@@ -279,7 +332,7 @@ int main(int argc, char** argv) {
       d.value("edge_eigen_lambda_im", sp.lambda_im, "its |imaginary part| / omega^2");
       d.value("edge_eigen_corner_distance_ps", (sp.where - sph::Vec2(q.a, q.a)).norm() / ps,
               "distance of the fastest mode's largest amplitude from the corner of the loaded and the free edge, in spacings");
-      const double g30 = edge("passes30_n" + std::to_string(eigen_n), q);
+      const double g30 = edge("passes30_n" + std::to_string(eigen_n), eigen_n, "passes30");
       d.value("edge_rate_passes30", g30, "measured growth rate / omega, closure iterated 30 times per step, n = " + std::to_string(eigen_n));
       d.value("edge_eigen_over_measured", sp.rate / g30, "predicted (spectrum) over measured (dynamic run) growth rate");
     }

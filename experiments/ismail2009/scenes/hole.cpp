@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -13,7 +14,9 @@
 #include "core/materials.hpp"
 #include "core/run_loop.hpp"
 #include "frame/progress.hpp"
+#include "frame/run_store.hpp"
 #include "ismail2009/scenes/domain_2d.hpp"
+#include "ismail2009/scenes/hole_store.hpp"
 
 namespace scenes {
 
@@ -53,6 +56,15 @@ sph::TlConfig2D hole_body(const HoleParams& p, const Load& load, double omega) {
 HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fractions,
                     const std::function<void(const sph::TlSolver2D&, double)>& snapshot) {
   if (p.n < 5) throw std::invalid_argument("run_hole: n >= 5");
+  const bool storable = snapshot_fractions.empty() && !snapshot;  // a snapshot needs the solver's state
+  if (storable)
+    if (auto served = serve_hole_run(p)) {
+      sph::particle_steps_reused() += static_cast<long long>(served->particles) * served->steps;
+      std::fprintf(stderr, "hole sheet %d x %d: a stored run (%s), not stepped again\n", p.n, p.n,
+                   sph::run_store_dir().c_str());
+      served->wall_s = 0;
+      return *served;
+    }
   const sph::Lame m = sph::lame_from_young_poisson(p.E, p.nu);
   const double cL = sph::longitudinal_wave_speed(m, p.rho), cT = sph::transverse_wave_speed(m, p.rho);
   const double t_ramp = p.ramp_transits * p.a / cT;
@@ -145,6 +157,7 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
     r.zigzag = std::sqrt(num / std::max(den, 1e-300));
     if (snapshot) snapshot(body, body.time());
   }
+  if (storable) store_hole_run(p, r);
   return r;
 }
 

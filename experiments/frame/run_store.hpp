@@ -1,0 +1,47 @@
+// The store of runs: a simulation run that several drivers (or a driver and the jobs that stepped its runs
+// beforehand, Makefile run_rules) need is stepped once, stored, and served again instead of stepped, bit for
+// bit. One file per run, <dir>/<kind>-<hash of key>[-<variant>].run: a line "sph-<kind>-run-1", the key (the
+// text of everything that decides the run's numbers, starting with run_store_key_prefix()), then the kind's own
+// payload. The scenes that store runs (gray2001/scenes/plate_run_cache.hpp, ismail2009/scenes/hole_store.hpp)
+// say what their keys hold and when a stored run may serve.
+//
+// Off unless the environment names a directory, SPH_RUN_CACHE (the Makefile sets <results>/.run_cache), and
+// only for a clean code version (not '-dirty', not 'unknown'), so that two different builds never share a key
+// (a unit test, one process and one build, sets SPH_RUN_CACHE_ALLOW_DIRTY=1).
+#pragma once
+
+#include <istream>
+#include <optional>
+#include <ostream>
+#include <string>
+
+namespace sph {
+
+/// The directory of the store, or "" when it is off.
+std::string run_store_dir();
+
+/// Every bit of a double, as text (hexadecimal floating point).
+std::string exact_text(double v);
+
+/// "code <version> isa <instruction sets> threads <T>": what every key starts with. The build (-march=native: two
+/// hosts sharing a results folder build the same code version into different arithmetic) and the thread count
+/// (the order of the sums) decide the bits of a run.
+std::string run_store_key_prefix();
+
+/// The payload stored under (kind, key, variant), if its file exists and names exactly that key.
+std::optional<std::string> run_store_read(const std::string& dir, const std::string& kind, const std::string& key,
+                                          const std::string& variant = "");
+
+/// Stores the payload under (kind, key, variant), atomically (a concurrent reader, another job of the same
+/// pipeline, sees the old file or the new one), and removes the runs of this kind stored by other code
+/// versions. A full disk loses the reuse, not the run.
+void run_store_write(const std::string& dir, const std::string& kind, const std::string& key, const std::string& payload,
+                     const std::string& variant = "");
+
+/// Payloads in binary: every bit of a value (the same host reads them back: the key names its build).
+template <class T>
+void store_put(std::ostream& o, const T& v) { o.write(reinterpret_cast<const char*>(&v), sizeof v); }
+template <class T>
+bool store_get(std::istream& i, T& v) { return static_cast<bool>(i.read(reinterpret_cast<char*>(&v), sizeof v)); }
+
+}  // namespace sph
