@@ -3,7 +3,8 @@
 #   make test      declaration check -> deps -> build -> GoogleTest (ctest) -> quick smoke run of every driver
 #                  -> quick check -> the report on the quick results
 # Other targets: make check, make paper, make bench, make bench-ab BASE=<rev>, make bench-peer, make sanitize, make deps, make clean, make check-targets,
-# make list-targets, make archive, make verify-archive FILE=<tar.gz>, make test-paraview.
+# make list-targets, make list-runs, make archive, make verify-archive FILE=<tar.gz>, make test-paraview, make test-slurm;
+# make figures LAUNCH=slurm RUN_JOBS=<n> on a cluster.
 # Make's dependency graph reruns a driver only when its binary changed. Threads: `figures` and `quick` run
 # NCORES drivers at a time, each single-threaded (OpenMP teams of two on 2 cores reach 1.3-1.8x, two
 # single-threaded drivers side by side ~2x; oversubscribed teams spin and run many times slower), the longest
@@ -56,13 +57,15 @@ check-targets: deps
 
 # ---------------------------------------------------------------------------------------------------
 # Set-up: Debian packages (apt) and the Python that can import matplotlib and pandas.
-deps:
-	@missing=$$(for p in $(DEB_PACKAGES); do dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
+# A recipe line that installs those of the Debian packages $(1) that are missing (apt; sudo unless root).
+apt_ensure = @missing=$$(for p in $(1); do dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
-	  echo "make deps: installing" $$missing; \
+	  echo "make $@: installing" $$missing; \
 	  SUDO=; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
 	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
+deps:
+	$(call apt_ensure,$(DEB_PACKAGES))
 	@$(PY) -c 'import matplotlib, pandas' || { echo "make deps: $(PY) cannot import matplotlib and pandas"; exit 1; }
 
 configure: $(BUILD)/CMakeCache.txt
@@ -92,9 +95,9 @@ launcher = $(if $(filter slurm,$(LAUNCH)),srun --ntasks=1 --cpus-per-task=$(SRUN
 
 # The unit of work. A target that declares T_RUNS (experiments/targets.mk) steps each of those simulation runs
 # as a job of its own: its driver (T_RUN_DRIVER if T has several) with T_RUN_ARGS <run> into
-# $(RESULTS)/.runs/T/<run>/, which leaves the run in
-# the store of runs (SPH_RUN_CACHE); then the target's own driver invocation finds every run there and only
-# collects (bit for bit the numbers stepping gives: plate_run_cache.hpp). So Make runs the runs side by side
+# $(RESULTS)/.runs/T/<run>/, which leaves the run in the store of runs (SPH_RUN_CACHE); then the target's own
+# driver invocation finds every run there and only collects (bit for bit the numbers stepping gives:
+# experiments/frame/run_store.hpp). So Make runs the runs side by side
 # (RUN_JOBS) and LAUNCH=slurm makes each a Slurm job. The store serves only a clean code version, so from a
 # checkout with uncommitted changes the runs are not split (they would be stepped twice).
 CLEAN_TREE := $(shell git diff --quiet HEAD -- 2>/dev/null && echo yes)
@@ -185,9 +188,7 @@ verify-archive:
 # the last quick or full run if there is one (tests/test_paraview.py).
 PV_SERIES = $(firstword $(patsubst %/,%,$(dir $(wildcard results/quick/H-fig4/*.xdmf results/H-fig4/*.xdmf))))
 test-paraview: deps configure
-	@dpkg-query -W -f='$${Status}' python3-paraview 2>/dev/null | grep -q 'install ok installed' || { \
-	  echo "make test-paraview: installing python3-paraview"; SUDO=; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
-	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends python3-paraview; }
+	$(call apt_ensure,python3-paraview)
 	cmake --build $(BUILD) -j $(JOBS) --target snapshot_sample
 	$(PY) tests/test_paraview.py --sample $(BIN)/snapshot_sample $(if $(PV_SERIES),--series $(PV_SERIES))
 
@@ -197,9 +198,7 @@ test-paraview: deps configure
 # found as a Slurm job that exited 0, and the values identical to those of the last local quick run if there
 # is one (results/quick). Needs root.
 test-slurm: deps build-drivers
-	@missing=$$(for p in slurm-wlm munge; do dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
-	if [ -n "$$missing" ]; then echo "make test-slurm: installing" $$missing; SUDO=; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
-	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; fi
+	$(call apt_ensure,slurm-wlm munge)
 	tests/test_slurm.sh
 
 # The library, the unit tests and the drivers built with AddressSanitizer and UndefinedBehaviorSanitizer
@@ -252,9 +251,7 @@ bench-ab: deps configure
 PEER_STEPS   ?= 600
 PEER_THREADS ?= 2
 bench-peer: deps configure
-	@dpkg-query -W -f='$${Status}' python3-pysph 2>/dev/null | grep -q 'install ok installed' || { \
-	  echo "make bench-peer: installing python3-pysph"; SUDO=; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
-	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends python3-pysph; }
+	$(call apt_ensure,python3-pysph)
 	cmake --build $(BUILD) --target bench_gray_scenes -j $(JOBS)
 	$(PY) tools/bench_peer.py --steps $(PEER_STEPS) --threads $(PEER_THREADS) --ours $(BIN)/bench_gray_scenes \
 	  --pysph-python $(PY) --out results/bench --bench-csv results/bench.csv
