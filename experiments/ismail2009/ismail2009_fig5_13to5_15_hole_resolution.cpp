@@ -175,10 +175,13 @@ int main(int argc, char** argv) {
       for (const auto& [name, _] : plan) std::printf("%s\n", name.c_str());
       return;
     }
+    auto planned = [&](const std::string& name) {  // the plan's entry of `name`, or plan.end()
+      return std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == name; });
+    };
     std::map<std::string, scenes::HoleResult> result;
     if (!only.empty()) {
       for (const auto& name : only) {
-        const auto it = std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == name; });
+        const auto it = planned(name);
         if (it == plan.end()) {  // e.g. a full-resolution run's name given to a --quick study
           std::fprintf(stderr, "run %s is not in this study (see --list-runs): nothing to step\n", name.c_str());
           continue;
@@ -196,7 +199,7 @@ int main(int argc, char** argv) {
                                         "smoothed_sigma1_hole_top_MPa", "zigzag", "settle_change", "speed_rise", "rest_speed_ratio", "fastest_X", "fastest_Y"});
     auto hist = d.csv("history.csv", {"series", "n", "hourglass", "t", "smoothed_sigma1_hole_top_MPa", "peak_sigma1_MPa", "max_speed"});
     auto run = [&](const std::string& series, const std::string& name) {
-      const scenes::HoleParams& q = std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == name; })->second;
+      const scenes::HoleParams& q = planned(name)->second;
       const scenes::HoleResult& r = result.at(name);
       if (!r.finite)
         throw std::runtime_error("the sheet run became non-finite (" + series + ", n = " + std::to_string(q.n) + ", gamma = " +
@@ -280,7 +283,7 @@ int main(int argc, char** argv) {
     // `series` names the run in edge_stability.csv; the run is the plan's edge_<run>_n<n>.
     auto edge = [&](const std::string& series, int n, const std::string& run = "") {
       const std::string name = edge_run_name(run.empty() ? series : run, n);
-      const scenes::HoleParams& q = std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == name; })->second;
+      const scenes::HoleParams& q = planned(name)->second;
       const scenes::HoleResult& r = result.at(name);
       ecsv.row(series, q.n, q.dt_factor, q.closure_passes, q.nu, q.variational ? "variational" : "ghost_reflection",
                r.finite ? 1 : 0, r.steps, r.wall_s, r.growth_rate, r.fastest_X.x(), r.fastest_X.y());
