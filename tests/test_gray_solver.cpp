@@ -364,8 +364,7 @@ TEST(GraySolver, PlasticReturnKeepsEveryStressOnOrInsideTheYieldSurface) {
 }
 
 #if SPH_WIDE_PASS2  // the wide path exists only on AVX-512 hosts; elsewhere the scalar loop is the only one
-// The eight-wide passes (pair_terms_wide.hpp, AVX-512: pass 2, and pass 1's XSPH terms) against the scalar loops,
-// bit for bit, for every
+// The eight-wide pass 2 (pair_terms_wide.hpp, AVX-512) against the scalar loop, bit for bit, for every
 // combination of terms: the same pairs, the same operations, the same order of every sum. Rows of every
 // length occur (a disordered block: 0 to ~14 pairs per row, so full, partial and empty eight-pair blocks),
 // and n = 4 and n = 3 for f^n.
@@ -408,7 +407,7 @@ void expect_wide_pass2_matches_scalar(int nart) {
   EXPECT_GT(largest, 1e-3) << terms;
 }
 
-TEST(GraySolver, WidePassesGiveTheScalarBitsForEveryTerm) {
+TEST(GraySolver, WidePassTwoGivesTheScalarBitsForEveryTerm) {
   using sph::GrayTerms;
   for (int nart : {4, 3}) {
     expect_wide_pass2_matches_scalar<GrayTerms<true, true, true, false>>(nart);

@@ -186,29 +186,7 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
       for (std::size_t a = a_begin; a < a_end; ++a) {
         Vec2 dv_avg_a = dv_avg[a];
         double rho_sum_a = rho_sum[a];
-        std::uint32_t k = row_[a];
-        const std::uint32_t end = row_[a] + active_[a];
-#if SPH_WIDE_PASS2
-        if constexpr (Wide && Terms::xsph) {
-          // The pairs' XSPH terms eight at a time (wide::xsph_terms8: gathers and one vector division), added
-          // below by the same expressions as the scalar loop's, in the same order: the same bits.
-          alignas(64) double w8[16];
-          for (; k + 8 <= end; k += 8) {
-            wide::xsph_terms8(a, k, nb_, W_, v_->data(), rho_, w8);
-            for (int j = 0; j < 8; ++j) {
-              const std::uint32_t b = nb_[k + j];
-              const Vec2 w(w8[2 * j], w8[2 * j + 1]);
-              dv_avg_a += m_[b] * w;
-              dv_avg[b] -= m_[a] * w;
-              if constexpr (Terms::summation) {
-                rho_sum_a += m_[b] * W_[k + j];
-                rho_sum[b] += m_[a] * W_[k + j];
-              }
-            }
-          }
-        }
-#endif
-        for (; k < end; ++k) {
+        for (std::uint32_t k = row_[a], end = row_[a] + active_[a]; k < end; ++k) {
           const std::uint32_t b = nb_[k];
           if constexpr (Terms::xsph) {
             const Vec2 w = xsph_pair_term(v_[a], v_[b], W_[k], rho_[a], rho_[b]);

@@ -1,4 +1,4 @@
-// Gray's pair loop eight pairs at a time on AVX-512 (pass 2, and the XSPH terms of pass 1), with the bits of the scalar
+// Pass 2 of Gray's pair loop (pair_terms.hpp) eight pairs at a time on AVX-512, with the bits of the scalar
 // loop. Each lane takes one pair of a row: the neighbours' fields are gathered, every per-pair number is
 // computed with the scalar loop's operations (a product that the scalar code adds unfused is computed by the
 // rounding-mode intrinsics, which GCC cannot fuse; a fused multiply-add where the scalar code has one), and
@@ -82,21 +82,6 @@ inline __m512d power(__m512d f, int n) {
   __m512d r = f;
   for (int i = 1; i < n; ++i) r = mul(r, f);
   return r;
-}
-
-/// Pass 1's XSPH terms (v_b - v_a) W_ab / (0.5 (rho_a + rho_b)) of pairs k .. k + 7 of row a (xsph_pair_term,
-/// operation by operation: no product in it is added, so there is nothing to fuse), into w = [x_0 y_0 x_1 y_1 ...].
-inline void xsph_terms8(std::size_t a, std::uint32_t k, const std::uint32_t* __restrict nb, const double* __restrict W,
-                        const double* __restrict v, const double* __restrict rho, double* __restrict w) {
-  const __m256i bi = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(nb + k));
-  const __m256i b2 = _mm256_slli_epi32(bi, 1);
-  const __m512d rho_ab = mul(bcast(0.5), add(bcast(rho[a]), _mm512_i32gather_pd(bi, rho, 8)));
-  const __m512d s = _mm512_div_pd(_mm512_loadu_pd(W + k), rho_ab);
-  const __m512d wx = mul(sub(_mm512_i32gather_pd(b2, v, 8), bcast(v[2 * a])), s);
-  const __m512d wy = mul(sub(_mm512_i32gather_pd(b2, v + 1, 8), bcast(v[2 * a + 1])), s);
-  const __m512i lo = _mm512_setr_epi64(0, 8, 1, 9, 2, 10, 3, 11), hi = _mm512_setr_epi64(4, 12, 5, 13, 6, 14, 7, 15);
-  _mm512_store_pd(w, _mm512_permutex2var_pd(wx, lo, wy));
-  _mm512_store_pd(w + 8, _mm512_permutex2var_pd(wx, hi, wy));
 }
 
 /// Pass 2 of row a: pairs k0 .. k1 - 1 (b > a), into the thread's sums; a's own sums in `sa` (a register).
