@@ -5,7 +5,9 @@ Every driver writes <results>/<target>/timing_<driver>.csv (a split target's run
 reused_particle_steps: the wall time of its run, the particle-steps its time loops took, and those it took from
 a stored run of another driver or target instead of stepping them: work done once, issue 13). This script
 collects them, sorted by wall time, adds the particle-steps per second, writes <results>/timings.csv and prints
-it with the totals.
+it with the totals, and the critical path: the drivers' time with one node for every job (make figures LAUNCH=slurm
+on enough nodes; issue 17), the longest chain of a target's runs (side by side, so their longest) and then its own
+driver invocations (one after another).
 """
 import argparse
 import csv
@@ -56,7 +58,25 @@ def main():
               f"{(f'{reused:.3g}' if reused else '-'):>10}")
     print(f"timings: {len(rows)} driver runs, {total:.0f} s in the drivers, {reused_total:.4g} particle-steps "
           f"taken from stored runs instead of stepped -> {out}")
+    target, seconds = critical_path(rows)
+    print(f"timings: critical path {seconds:.0f} s ({target}): the drivers' time with a node for every job")
     return 0
+
+
+def critical_path(rows):
+    """(target, seconds) of the longest chain of jobs: a target's runs (labelled T/<run>) run side by side before
+    its own driver invocations, which run one after another (the Makefile's run_rules and target_rules)."""
+    runs, own = {}, {}
+    for r in rows:
+        target, _, run = r["target"].partition("/")
+        wall = float(r["wall_s"])
+        if run:
+            runs[target] = max(runs.get(target, 0.0), wall)
+        else:
+            own[target] = own.get(target, 0.0) + wall
+    chains = {t: runs.get(t, 0.0) + own.get(t, 0.0) for t in set(runs) | set(own)}
+    target = max(chains, key=lambda t: (chains[t], t))
+    return target, chains[target]
 
 
 if __name__ == "__main__":
