@@ -45,6 +45,8 @@ int main(int argc, char** argv) {
   d.param("max-threads", max_threads, "largest thread count (runs 1 and this)").positive();
   double cfl = sph::GrayParameters{}.cfl;  // the scheme's default: the step sets how often the pairs are re-collected
   d.param("cfl", cfl, "time-step factor of every run").positive();
+  double skin = sph::GrayParameters{}.skin_over_h;  // the scheme's default
+  d.param("skin-over-h", skin, "Verlet skin of the pair list in units of h, every run (0: search every step)").non_negative();
   std::vector<std::string> scenes{"rings", "plate", "slab"};
   d.param("scenes", scenes, "scenes to run, comma-separated (make bench-peer: rings)")
       .delimiter(',')
@@ -63,6 +65,7 @@ int main(int argc, char** argv) {
       rs.dp = 0.05;
       sph::GrayParameters rp;  // the scheme's defaults: Sec 7.2's mu = 0.22, h = 1.5 dp
       rp.cfl = cfl;
+      rp.skin_over_h = skin;
       const auto rings = scenes::make_rings(rs, rp.rho0);
       double rate[3] = {0, 0, 0};
       for (int t : threads) {
@@ -81,6 +84,7 @@ int main(int argc, char** argv) {
       ps.Vf = 0.01;
       sph::GrayParameters pp;
       pp.cfl = cfl;
+      pp.skin_over_h = skin;
       const auto plate = scenes::make_plate(ps, pp);
       sph::GrayOptions full, no_as, no_xsph, no_visc, none;
       no_as.artificial_stress = false;
@@ -102,6 +106,7 @@ int main(int argc, char** argv) {
       ss.dp = 0.016;
       sph::GrayParameters sp = scenes::slab_scheme();
       sp.cfl = cfl;
+      sp.skin_over_h = skin;
       const auto slab = scenes::make_slab(ss, sp.rho0);
       sph::GrayOptions plastic = scenes::slab_options(), elastic;
       for (const Variant& v : {Variant{"artstress+xsph+visc+vonmises", plastic}, Variant{"no plasticity", elastic}})

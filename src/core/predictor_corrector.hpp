@@ -10,7 +10,8 @@
 //
 // A State has x and v (std::vector<Vec2>) and first_order(), a std::tie of its first-order fields; Rates
 // have dx (the u above), dv (the a above) and first_order(), the rates of the same fields in the same order.
-// Everything is element by element, with OpenMP over particles; nothing allocates.
+// Everything is element by element (every first-order field has one entry per particle), with OpenMP over
+// particles; nothing allocates.
 #pragma once
 
 #include <cstddef>
@@ -40,42 +41,43 @@ struct PredictorCorrector {
   static void predict(State& y, double dt, const Rates& r) {
     const long n = static_cast<long>(y.x.size());
     const double half_dt2 = 0.5 * dt * dt;
+    auto q = y.first_order();
+    const auto dq = r.first_order();
+    // One loop for every field (one fork and join instead of one per field: on two threads the joins of these
+    // cheap loops were a measurable part of a step); each element gets the same operations as before.
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long a = 0; a < n; ++a) {
       y.x[a] += dt * r.dx[a] + half_dt2 * r.dv[a];
       y.v[a] += dt * r.dv[a];
+      each_field([&](auto& qf, const auto& d0, const auto&) { qf[a] += dt * d0[a]; }, q, dq, dq);
     }
-    each_first_order(y, r, r, [dt](auto& q, const auto& dq, const auto&, long a) { q[a] += dt * dq[a]; });
   }
 
   /// (6.17)-(6.18).
   static void correct(State& y, double dt, const Rates& r0, const Rates& r1) {
     const long n = static_cast<long>(y.v.size());
     const double half_dt = 0.5 * dt;
+    auto q = y.first_order();
+    const auto d0 = r0.first_order();
+    const auto d1 = r1.first_order();
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
-    for (long a = 0; a < n; ++a) y.v[a] += half_dt * (r1.dv[a] - r0.dv[a]);
-    each_first_order(y, r0, r1, [half_dt](auto& q, const auto& d0, const auto& d1, long a) { q[a] += half_dt * (d1[a] - d0[a]); });
+    for (long a = 0; a < n; ++a) {
+      y.v[a] += half_dt * (r1.dv[a] - r0.dv[a]);
+      each_field([&](auto& qf, const auto& e0, const auto& e1) { qf[a] += half_dt * (e1[a] - e0[a]); }, q, d0, d1);
+    }
   }
 
  private:
-  // f(q, dq0, dq1, a) for every first-order field q and particle a.
-  template <class F>
-  static void each_first_order(State& y, const Rates& r0, const Rates& r1, F&& f) {
-    auto q = y.first_order();
-    auto d0 = r0.first_order();
-    auto d1 = r1.first_order();
-    constexpr std::size_t nf = std::tuple_size_v<decltype(q)>;
+  // f(q_i, d0_i, d1_i) for the i-th first-order field and its two rates, for every i.
+  template <class F, class Q, class D0, class D1>
+  static void each_field(F&& f, Q& q, const D0& d0, const D1& d1) {
+    constexpr std::size_t nf = std::tuple_size_v<Q>;
+    static_assert(nf == std::tuple_size_v<D0> && nf == std::tuple_size_v<D1>, "rates must match the first-order fields");
     visit(f, q, d0, d1, std::make_index_sequence<nf>{});
   }
   template <class F, class Q, class D0, class D1, std::size_t... I>
-  static void visit(F& f, Q& q, D0& d0, D1& d1, std::index_sequence<I...>) {
-    (loop(f, std::get<I>(q), std::get<I>(d0), std::get<I>(d1)), ...);
-  }
-  template <class F, class Field, class R>
-  static void loop(F& f, Field& q, const R& d0, const R& d1) {
-    const long n = static_cast<long>(q.size());
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-    for (long a = 0; a < n; ++a) f(q, d0, d1, a);
+  static void visit(F& f, Q& q, const D0& d0, const D1& d1, std::index_sequence<I...>) {
+    (f(std::get<I>(q), std::get<I>(d0), std::get<I>(d1)), ...);
   }
 };
 

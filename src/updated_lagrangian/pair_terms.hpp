@@ -71,6 +71,7 @@ auto select_terms(const GrayOptions& o, F&& f) {
 struct GrayScratch {
   std::vector<Tensor2> sigma_over_rho2, R;  ///< R only with the artificial stress
   std::vector<double> volume;               ///< m / rho
+  std::vector<ParticleRecord> records;      ///< the eight-wide pass 2's copy of what it reads per particle
   struct Partial {
     std::vector<Vec2> dv_avg;               ///< XSPH sum
     std::vector<double> rho_sum;            ///< summation density
@@ -133,6 +134,7 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
   auto& R = scratch.R;
   auto& volume = scratch.volume;
   scratch.size_for(n, omp_get_max_threads());
+  if (Wide && scratch.records.size() != n) scratch.records.assign(n, ParticleRecord{});
   auto& partial = scratch.partial;
   const std::vector<Vec2>& vhat = Terms::xsph ? out.vhat : v;
   const double W0 = kernel.W(0.0, h);
@@ -213,9 +215,29 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
         if constexpr (Terms::summation) rho[a] = sum_threads(a, &GrayScratch::Partial::rho_sum) + m[a] * W0;
       }
       const Tensor2 sigma = S[a] - linear_eos_pressure(rho[a], p.rho0, p.c0) * Tensor2::Identity();
-      sigma_over_rho2[a] = sigma / (rho[a] * rho[a]);
-      volume[a] = m[a] / rho[a];
-      if constexpr (Terms::artificial_stress) R[a] = artificial_stress(sigma, rho[a], p.eps_artificial);
+      const Tensor2 A = sigma / (rho[a] * rho[a]);
+      const double V = m[a] / rho[a];
+      const Tensor2 Ra = Terms::artificial_stress ? artificial_stress(sigma, rho[a], p.eps_artificial) : Tensor2::Zero();
+      if constexpr (Wide) {  // pass 2 reads the neighbours' records (pair_terms_wide.hpp)
+        double* r = scratch.records[a].s;
+        for (int c = 0; c < 4; ++c) {
+          r[ParticleRecord::kA + c] = A.data()[c];
+          r[ParticleRecord::kR + c] = Ra.data()[c];
+        }
+        const Vec2 u = Terms::xsph ? out.vhat[a] : v[a];
+        r[ParticleRecord::kV] = v[a].x();
+        r[ParticleRecord::kV + 1] = v[a].y();
+        r[ParticleRecord::kVhat] = u.x();
+        r[ParticleRecord::kVhat + 1] = u.y();
+        r[ParticleRecord::kRho] = rho[a];
+        r[ParticleRecord::kMass] = m[a];
+        r[ParticleRecord::kVolume] = V;
+        r[15] = 0.0;
+      } else {
+        sigma_over_rho2[a] = A;
+        volume[a] = V;
+        if constexpr (Terms::artificial_stress) R[a] = Ra;
+      }
     }
 
     // Pass 2: acceleration (3.1)/(3.12), continuity (3.8), velocity gradient (3.10), each pair once: with
@@ -227,9 +249,7 @@ void evaluate_gray_rates(ElasticBody& body, const GrayParameters& p, const Cubic
       PairSums* __restrict sums = q.sums.data();
       if constexpr (Wide) {
 #if SPH_WIDE_PASS2
-        const Pass2Inputs in{nb_, dx_->data(), W_, F_, v_->data(), vhat.data()->data(), m_, rho.data(),
-                             sigma_over_rho2.data()->data(), Terms::artificial_stress ? R.data()->data() : nullptr,
-                             volume.data(), h, eta2, p.alpha, p.beta, p.c0, inv_Wdp, nart};
+        const Pass2Inputs in{nb_, dx_->data(), W_, F_, scratch.records.data(), h, eta2, p.alpha, p.beta, p.c0, inv_Wdp, nart};
         for (std::size_t a = a_begin; a < a_end; ++a) wide::pass2_row<Terms>(a, row_[a], row_[a] + active_[a], in, sums);
 #endif
       } else {
