@@ -174,7 +174,7 @@ struct PairList {
   template <class G>
   struct batch8_of<G, std::void_t<decltype(G::batch8)>> : std::bool_constant<G::batch8> {};
 
-  // The refresh eight candidates at a time (no periodic wrap): the candidates' positions gathered, the
+  // The refresh eight candidates at a time (no periodic wrap): the candidates' positions loaded, the
   // distances and the geometry's eight-wide form computed, and the pairs inside the support stored in
   // candidate order (compressed). Every number is the one the scalar loop above computes, bit for bit: x_a -
   // x_b by components, |d|^2 as x^2 + y^2 without a fused multiply-add (Eigen's squaredNorm of a Vec2), the
@@ -193,6 +193,7 @@ struct PairList {
     std::uint32_t* __restrict active_ = active.data();
     std::uint32_t* __restrict reach_ = reach.data();
     const __m512i lo = _mm512_setr_epi64(0, 8, 1, 9, 2, 10, 3, 11), hi = _mm512_setr_epi64(4, 12, 5, 13, 6, 14, 7, 15);
+    const __m512i even = _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14), odd = _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15);
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (long a = 0; a < n; ++a) {
       std::uint32_t j = start_[a];
@@ -201,9 +202,19 @@ struct PairList {
       for (std::uint32_t k = start_[a], end = start_[a + 1]; k < end; k += 8) {
         const __mmask8 live = end - k >= 8 ? 0xff : static_cast<__mmask8>((1u << (end - k)) - 1u);
         const __m256i c = _mm256_maskz_loadu_epi32(live, cand_ + k);
-        const __m256i c2 = _mm256_slli_epi32(c, 1);  // x_c at xd[2c], y_c at xd[2c + 1]
-        const __m512d dxv = _mm512_sub_pd(xa, _mm512_mask_i32gather_pd(xa, live, c2, xd, 8));
-        const __m512d dyv = _mm512_sub_pd(ya, _mm512_mask_i32gather_pd(ya, live, c2, xd + 1, 8));
+        // The candidates' positions, one 16-byte load each, deinterleaved into x and y lanes (two gathers took
+        // longer on the AMD host); lanes past the row read particle 0 and are never kept.
+        alignas(32) std::uint32_t ci[8];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(ci), c);
+        auto four = [&](int j) {  // [x y] of candidates j .. j + 3
+          __m512d q = _mm512_castpd128_pd512(_mm_loadu_pd(xd + 2 * std::size_t{ci[j]}));
+          q = _mm512_insertf64x2(q, _mm_loadu_pd(xd + 2 * std::size_t{ci[j + 1]}), 1);
+          q = _mm512_insertf64x2(q, _mm_loadu_pd(xd + 2 * std::size_t{ci[j + 2]}), 2);
+          return _mm512_insertf64x2(q, _mm_loadu_pd(xd + 2 * std::size_t{ci[j + 3]}), 3);
+        };
+        const __m512d p_lo = four(0), p_hi = four(4);
+        const __m512d dxv = _mm512_sub_pd(xa, _mm512_permutex2var_pd(p_lo, even, p_hi));
+        const __m512d dyv = _mm512_sub_pd(ya, _mm512_permutex2var_pd(p_lo, odd, p_hi));
         // The rounding-mode forms are not plain vector operators, so GCC cannot fuse them into a multiply-add.
         constexpr int kAsIs = _MM_FROUND_CUR_DIRECTION;
         const __m512d r2 = _mm512_add_round_pd(_mm512_mul_round_pd(dxv, dxv, kAsIs), _mm512_mul_round_pd(dyv, dyv, kAsIs), kAsIs);
