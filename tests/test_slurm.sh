@@ -7,6 +7,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 PY=/usr/bin/python3
 export SPH_SLURM_DIR=${SPH_SLURM_DIR:-/tmp/sph-slurm}
+# Stop on exit (pass or fail) the Slurm daemons this test starts; an instance that was already up is left up.
+pid=$SPH_SLURM_DIR/run/slurmctld.pid
+if [ -f "$pid" ] && kill -0 "$(cat "$pid")" 2> /dev/null; then
+  echo "test-slurm: a single-node Slurm is already up; it stays up"
+else
+  trap 'tools/slurm_single_node.sh stop' EXIT
+fi
 tools/slurm_single_node.sh start
 export SLURM_CONF=$SPH_SLURM_DIR/slurm.conf
 LOG=$SPH_SLURM_DIR/log/slurmctld.log
