@@ -54,7 +54,8 @@ TEST_F(HoleStore, AServedRunIsTheSteppedRunBitForBit) {
                   same_bits(a.vmax, b.vmax)) << k;
     }
   }
-  EXPECT_EQ(via_run.wall_s, 0.0);  // served: no time spent stepping
+  EXPECT_TRUE(same_bits(via_run.wall_s, stepped.wall_s));  // served: the stepping run's wall time, not 0 (plotted against n)
+  EXPECT_GT(stepped.wall_s, 0.0);
   EXPECT_GT(stepped.history.size(), 10u);
 }
 

@@ -69,6 +69,7 @@ TEST_F(PlateRunCache, AServedPrefixIsTheSteppedRunBitForBit) {
   EXPECT_GT(longer.steps, stepped.steps);
   const auto served = scenes::run_plate(short_plate(1));
   EXPECT_TRUE(served.reused);
+  EXPECT_TRUE(std::isnan(served.wall_s));  // a prefix was not timed: not a time of 0 (a work-precision column)
   expect_identical(served, stepped);
   EXPECT_EQ(scenes::period_from_crossings(scenes::zero_crossings(served.trace)),
             scenes::period_from_crossings(scenes::zero_crossings(stepped.trace)));

@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
     if (ns.size() < 2) throw std::invalid_argument("need at least two resolutions");
     const double mu = scheme.mu, alpha = scheme.alpha;
     const double T_theory = scenes::plate_theory_period(mu, 2.0, 20.0);
+    // wall_s: the run's time loop; nan for a run served from the store of runs (a prefix of a longer run, not timed).
     auto table = d.csv("runs.csv", {"n", "alpha", "particles", "dt", "steps", "wall_s", "T_sph", "amp_first", "amp_second",
                                     "decay_per_period", "T_over_theory"});
     struct Run { int n; double alpha; };

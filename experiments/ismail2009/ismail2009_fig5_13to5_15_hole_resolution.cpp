@@ -194,6 +194,8 @@ int main(int argc, char** argv) {
       return;
     }
     for (const auto& [name, q] : plan) result.emplace(name, scenes::run_hole(q));
+    // wall_s, build_s: of the run where it was stepped (a run job, or this process); a run served from the store
+    // of runs reports the times the stepping run stored.
     auto out = d.csv("resolution.csv", {"series", "n", "hourglass", "law", "traction_MPa", "particles", "steps", "wall_s", "build_s",
                                         "sigma1_hole_top_MPa", "peak_sigma1_MPa", "peak_sigma1_dynamic_MPa",
                                         "smoothed_sigma1_hole_top_MPa", "zigzag", "settle_change", "speed_rise", "rest_speed_ratio", "fastest_X", "fastest_Y"});

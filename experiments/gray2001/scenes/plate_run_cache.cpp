@@ -1,5 +1,6 @@
 #include "gray2001/scenes/plate_run_cache.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "frame/run_store.hpp"
@@ -101,7 +102,7 @@ std::optional<PlateRunResult> serve_plate_run(const PlateRunSpec& s, const std::
     r.particles = stored->particles;
     r.dt = stored->dt;
     r.fracture_time = (stored->fracture_time >= 0 && stored->fracture_time <= r.trace.back().t) ? stored->fracture_time : -1;
-    r.wall_s = 0;
+    r.wall_s = NAN;  // not stepped here: its wall time is part of the stored run's, not measured for this prefix (0 read as a time)
     r.reused = true;
     return r;
   }

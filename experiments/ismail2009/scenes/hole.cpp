@@ -62,8 +62,7 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
       sph::particle_steps_reused() += static_cast<long long>(served->particles) * served->steps;
       std::fprintf(stderr, "hole sheet %d x %d: a stored run (%s), not stepped again\n", p.n, p.n,
                    sph::run_store_dir().c_str());
-      served->wall_s = 0;
-      return *served;
+      return *served;  // its wall_s is the stepping run's (the job that stepped it), as the resolution figure plots it
     }
   const sph::Lame m = sph::lame_from_young_poisson(p.E, p.nu);
   const double cL = sph::longitudinal_wave_speed(m, p.rho), cT = sph::transverse_wave_speed(m, p.rho);
