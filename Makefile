@@ -21,7 +21,7 @@ FIGURES ?= figures
 DRIVER_FLAGS ?=
 CHECK_FLAGS  ?=
 
-DEB_PACKAGES := cmake make g++ git pkg-config libeigen3-dev libgsl-dev libhdf5-dev libcli11-dev \
+DEB_PACKAGES := cmake make ninja-build g++ git pkg-config libeigen3-dev libgsl-dev libhdf5-dev libcli11-dev \
                 libgtest-dev libbenchmark-dev python3-matplotlib python3-pandas
 
 include experiments/targets.mk
@@ -68,9 +68,16 @@ deps:
 	$(call apt_ensure,$(DEB_PACKAGES))
 	@$(PY) -c 'import matplotlib, pandas' || { echo "make deps: $(PY) cannot import matplotlib and pandas"; exit 1; }
 
+# Ninja, not CMake's default Makefiles: it schedules the compiles of every target together, where the
+# Makefiles build one target's objects at a time (the drivers of a fresh clone in 160 s instead of 238 s on 2
+# cores, the same 310 s of CPU). A build directory configured with another generator is configured afresh.
+CMAKE_GENERATOR_FLAGS := -G Ninja
+ninja_only = @if [ -f $(1)/CMakeCache.txt ] && ! grep -qx 'CMAKE_GENERATOR:INTERNAL=Ninja' $(1)/CMakeCache.txt; then \
+	  echo "$(1) was configured with another generator: configuring it afresh"; rm -rf $(1)/CMakeCache.txt $(1)/CMakeFiles; fi
 configure: $(BUILD)/CMakeCache.txt
-$(BUILD)/CMakeCache.txt: CMakeLists.txt
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+$(BUILD)/CMakeCache.txt: CMakeLists.txt | deps
+	$(call ninja_only,$(BUILD))
+	cmake -S . -B $(BUILD) $(CMAKE_GENERATOR_FLAGS) -DCMAKE_BUILD_TYPE=Release
 
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -206,7 +213,8 @@ test-slurm: deps build-drivers
 # `make test` (it costs ~3x a quick pipeline; the README gives the measured time).
 SAN_BUILD := build-sanitize
 sanitize: deps
-	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O1 -DSPH_SANITIZE=ON
+	$(call ninja_only,$(SAN_BUILD))
+	cmake -S . -B $(SAN_BUILD) $(CMAKE_GENERATOR_FLAGS) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O1 -DSPH_SANITIZE=ON
 	cmake --build $(SAN_BUILD) -j $(JOBS)
 	cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 OMP_NUM_THREADS=1 \
