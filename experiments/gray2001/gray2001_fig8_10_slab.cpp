@@ -33,13 +33,20 @@
 //   columns more than 2 dp apart (CHOSEN: a column's worth of void), with its distance from the nearer band
 //   edge. With eps = 0 the instability pairs columns all along the slab and the surface rows hold the
 //   pieces together, so the ends part (fracture_time) well after the first gap opens at a junction.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "frame/driver.hpp"
+#include "frame/run_store.hpp"
+#include "core/run_loop.hpp"
 #include "io/snapshot.hpp"
 #include "gray2001/scenes/plate_run.hpp"
 #include "gray2001/scenes/slab.hpp"
+#include "gray2001/scenes/slab_store.hpp"
 
 namespace {
 
@@ -90,6 +97,11 @@ int main(int argc, char** argv) {
   d.param("runs", runs, "which of the runs eps = 0 and eps = 0.3 to do (e.g. --runs 0.3 for a fine eps = 0.3 run only)").non_negative();
   d.param("study-dps", study_dps, "further spacings of the eps = 0.3 resolution study (0: none)").non_negative();
   scenes::SlabSpec seeding;  // the perfect lattice by default; a jitter and seed draw one member of an ensemble
+  std::vector<std::string> step_only;
+  bool list_runs = false;
+  d.param("step-runs", step_only, "step only these runs (names as printed by --list-runs) into the store of runs (SPH_RUN_CACHE), "
+          "for the run that collects them (Makefile run_rules); of the outputs only the main runs' snapshots and frames are written");
+  d.param("list-runs", list_runs, "print the names of the runs and exit");
   d.param("jitter", seeding.jitter, "random displacement of every particle, up to this x dp (0: the lattice; SlabSpec::jitter)").non_negative();
   d.param("seed", seeding.seed, "seed of the jitter");
 
@@ -126,24 +138,86 @@ int main(int argc, char** argv) {
       for (const auto& m : r.trace)
         trace.row(m.t, m.extension, m.strain, m.ke, m.ee, m.neck_width, m.neck_x, m.median_width, m.closest, m.widest_gap, m.gap_x, m.pieces, m.parted);
     };
-    double fracture_main = NAN;
+    // The runs, named (the unit of a job: Makefile run_rules, experiments/targets.mk G-fig8_RUNS): the main runs
+    // (eps = 0 and 0.3 at dp, with snapshots and frames) and the eps = 0.3 study. Every run is stepped, or served
+    // by the store of runs with the files its observer wrote, before the outputs are written.
+    struct Planned { std::string name; double eps, dp; bool main; };
+    std::vector<Planned> plan;
     for (const double eps : runs) {
       if (eps != 0.0 && eps != 0.3) throw std::invalid_argument("runs: the figures' runs are eps = 0 and eps = 0.3");
-      const std::string tag = eps > 0 ? "eps0.3" : "eps0";
-      const double every = eps > 0 ? frame_every : frame_every_eps0;
-      sph::SnapshotSeries snaps(d.out_dir() / ("snapshots_" + tag + ".h5"), d.info());
-      auto frames = d.csv("frames_" + tag + ".csv", scenes::frame_columns());
-      double next_frame = 0;
-      bool parted_shown = false;
-      auto on_sample = [&](const sph::GraySolver& solver, const sph::ElasticBody& body, const scenes::SlabSample& smp) {
-        const bool first_parted = smp.parted && !parted_shown;  // a frame at the fracture as well
-        if (!first_parted && solver.time() + 1e-9 < next_frame) return;
-        parted_shown = parted_shown || smp.parted;
-        if (!first_parted) next_frame += every;
-        snaps.write(sph::snapshot_of(solver));
-        scenes::write_frame(frames, solver, body);
-      };
-      const auto r = scenes::run_slab(spec(eps, dp), on_sample, "slab " + tag);
+      plan.push_back({eps > 0 ? "eps0.3" : "eps0", eps, dp, true});
+    }
+    for (const double sdp : study_dps) {
+      if (sdp == 0) continue;  // --study-dps 0: no study
+      if (!(sdp > 0)) throw std::invalid_argument("study-dps: spacings must be > 0 (0: no study)");
+      plan.push_back({"eps0.3_" + dp_tag(sdp), 0.3, sdp, false});
+    }
+    if (list_runs) {
+      for (const auto& r : plan) std::printf("%s\n", r.name.c_str());
+      return;
+    }
+    auto step = [&](const Planned& run) {  // stepped here (or served), with the main runs' snapshots and frames
+      const auto s = spec(run.eps, run.dp);
+      const std::string tag = run.eps > 0 ? "eps0.3" : "eps0";
+      const double every = run.eps > 0 ? frame_every : frame_every_eps0;
+      const std::string files_tag = run.main ? "snapshots and frames every " + sph::format_number(every) : "none";
+      const std::vector<std::string> names{"snapshots_" + tag + ".h5", "snapshots_" + tag + ".xdmf", "frames_" + tag + ".csv"};
+      if (auto stored = scenes::serve_slab_run(s, files_tag)) {
+        for (const auto& [name, bytes] : stored->files) std::ofstream(d.out_dir() / name, std::ios::binary) << bytes;
+        sph::particle_steps_reused() += static_cast<long long>(stored->result.particles) * stored->result.steps;
+        std::fprintf(stderr, "slab %s: a stored run (%s), not stepped again\n", run.name.c_str(), sph::run_store_dir().c_str());
+        return stored->result;  // its wall_s is the stepping run's
+      }
+      scenes::StoredSlabRun done;
+      if (!run.main) {
+        done.result = scenes::run_slab(s, {}, "slab eps0.3 " + dp_tag(run.dp));
+      } else {
+        {
+          sph::SnapshotSeries snaps(d.out_dir() / names[0], d.info());
+          auto frames = d.csv(names[2], scenes::frame_columns());
+          double next_frame = 0;
+          bool parted_shown = false;
+          auto on_sample = [&](const sph::GraySolver& solver, const sph::ElasticBody& body, const scenes::SlabSample& smp) {
+            const bool first_parted = smp.parted && !parted_shown;  // a frame at the fracture as well
+            if (!first_parted && solver.time() + 1e-9 < next_frame) return;
+            parted_shown = parted_shown || smp.parted;
+            if (!first_parted) next_frame += every;
+            snaps.write(sph::snapshot_of(solver));
+            scenes::write_frame(frames, solver, body);
+          };
+          done.result = scenes::run_slab(s, on_sample, "slab " + tag);
+        }  // the files closed: stored as written
+        for (const auto& name : names) {
+          std::ifstream in(d.out_dir() / name, std::ios::binary);
+          done.files.emplace_back(name, std::string(std::istreambuf_iterator<char>(in), {}));
+        }
+      }
+      scenes::store_slab_run(s, files_tag, done);
+      return done.result;
+    };
+    if (!step_only.empty()) {
+      for (const auto& name : step_only) {
+        const auto it = std::find_if(plan.begin(), plan.end(), [&](const Planned& r) { return r.name == name; });
+        if (it == plan.end()) {  // e.g. a study run's name given to a --quick run, which has no study
+          std::fprintf(stderr, "run %s is not among this driver's runs (see --list-runs): nothing to step\n", name.c_str());
+          continue;
+        }
+        if (sph::run_store_dir().empty())
+          std::fprintf(stderr, "run %s: the store of runs is off (SPH_RUN_CACHE unset or a dirty build): stepped for nothing\n",
+                       name.c_str());
+        step(*it);
+      }
+      return;
+    }
+    std::vector<scenes::SlabRunResult> result;
+    for (const auto& run : plan) result.push_back(step(run));
+    // wall_s: of the run where it was stepped (a run job, or this process).
+    double fracture_main = NAN;
+    for (std::size_t i = 0; i < plan.size(); ++i) {
+      if (!plan[i].main) continue;
+      const double eps = plan[i].eps;
+      const std::string tag = plan[i].name;
+      const auto& r = result[i];
       write_trace("trace_" + tag + ".csv", r);
       record(eps, dp, r);
       if (eps == 0) {
@@ -180,10 +254,10 @@ int main(int argc, char** argv) {
     auto study = d.csv("resolution.csv", {"dp", "particles", "steps", "wall_s", "fracture_time", "neck_before_fracture_over_dp",
                                           "onset_strain", "neck_10dp_time"});
     double coarse_fracture = NAN, coarse_dp = 0;
-    for (const double sdp : study_dps) {
-      if (sdp == 0) continue;  // --study-dps 0: no study
-      if (!(sdp > 0)) throw std::invalid_argument("study-dps: spacings must be > 0 (0: no study)");
-      const auto r = scenes::run_slab(spec(0.3, sdp), {}, "slab eps0.3 " + dp_tag(sdp));
+    for (std::size_t i = 0; i < plan.size(); ++i) {
+      if (plan[i].main) continue;
+      const double sdp = plan[i].dp;
+      const auto& r = result[i];
       write_trace("trace_eps0.3_" + dp_tag(sdp) + ".csv", r);
       record(0.3, sdp, r);
       study.row(sdp, r.particles, r.steps, r.wall_s, r.fracture_time, r.neck_before_fracture / sdp, r.onset_strain,

@@ -4,15 +4,14 @@
 #include <sstream>
 
 #include "frame/run_store.hpp"
+#include "gray2001/scenes/scheme_key.hpp"
 
 namespace scenes {
 
 namespace {
 
-// A field added to one of these structs must be added to the key below: the sizes make the compiler say so.
+// A field added to PlateSpec must be added to the key below: the size makes the compiler say so.
 static_assert(sizeof(PlateSpec) == 64, "PlateSpec changed: update plate_run_key");
-static_assert(sizeof(sph::GrayParameters) == 96, "GrayParameters changed: update plate_run_key");
-static_assert(sizeof(sph::GrayOptions) == 5, "GrayOptions changed: update plate_run_key");
 
 using sph::exact_text;
 
@@ -59,18 +58,11 @@ std::string plate_run_cache_dir() { return sph::run_store_dir(); }
 
 std::string plate_run_key(const PlateRunSpec& s) {
   const PlateSpec& p = s.plate;
-  const sph::GrayParameters& g = s.scheme;
-  const sph::GrayOptions& o = s.options;
   std::ostringstream k;
   k << sph::run_store_key_prefix() << " plate L " << exact_text(p.L) << " H " << exact_text(p.H) << " dp "
     << exact_text(p.dp) << " clamp " << exact_text(p.clamp_length) << " layers " << p.clamp_layers << " Vf "
-    << exact_text(p.Vf) << " perturbation " << exact_text(p.perturbation) << " seed " << p.seed << " scheme rho0 "
-    << exact_text(g.rho0) << " c0 " << exact_text(g.c0) << " mu " << exact_text(g.mu) << " h/dp "
-    << exact_text(g.h_over_dp) << " eps " << exact_text(g.eps_artificial) << " n " << g.n_artificial << " xsph "
-    << exact_text(g.eps_xsph) << " alpha " << exact_text(g.alpha) << " beta " << exact_text(g.beta) << " yield "
-    << exact_text(g.yield_stress) << " cfl " << exact_text(g.cfl) << " skin " << exact_text(g.skin_over_h)
-    << " options " << o.artificial_stress << o.xsph << o.viscosity << o.summation_density << o.plasticity
-    << " sample_dt " << exact_text(s.sample_dt) << " link " << exact_text(s.fracture_link) << " check_dt "
+    << exact_text(p.Vf) << " perturbation " << exact_text(p.perturbation) << " seed " << p.seed << " "
+    << gray_scheme_key(s.scheme, s.options) << " sample_dt " << exact_text(s.sample_dt) << " link " << exact_text(s.fracture_link) << " check_dt "
     << exact_text(s.fracture_check_dt);
   return k.str();
 }
