@@ -47,7 +47,7 @@ G-stab_DRIVERS := gray2001_plate_stability
 G-wp_DRIVERS := gray2001_plate_work_precision
 # Sections 7.2-7.3: colliding rings, the slab with von Mises plasticity (experiments/scenes/rings*, slab*),
 # their stability stress test, and the table of tensile-instability cures (beyond the paper). Full runs on
-# one core: G-fig6 ~0.5 min, G-fig8 ~22 min (the paper's dp = 0.016 and the study at 0.032 and 0.064), G-stab-rs ~2 min, X ~1 min.
+# one core (AMD host, afd2d48): G-fig6 ~10 s, G-fig8 ~5 min in four run jobs (eps = 0.3 at the paper's dp = 0.016 ~230 s, eps = 0 ~60 s, the study at 0.032 and 0.064 ~25 and 3 s), G-stab-rs ~1.5 min, X ~20 s.
 TARGETS += G-fig6 G-fig8 G-stab-rs X
 G-fig6_DRIVERS := gray2001_fig6_7_rings
 G-fig8_DRIVERS := gray2001_fig8_10_slab
