@@ -42,6 +42,10 @@ G-tab2_RUN_ARGS := --coarse-reference false --rows
 G-fig1_DRIVERS := gray2001_fig1_periodic_array
 G-fig2_DRIVERS := gray2001_fig2_3_plate_fracture
 G-fig4_DRIVERS := gray2001_fig4_plate_resolution
+# Fig 4's five plate runs as jobs of their own (--list-runs true prints them): the plate store serves them to the
+# collecting run with the stepping job's wall times (the work-precision axis of the figure).
+G-fig4_RUNS := n10_alpha1 n20_alpha1 n30_alpha1 n10_alpha0.5 n10_alpha2
+G-fig4_RUN_ARGS := --step-runs
 G-fig5_DRIVERS := gray2001_fig5_plate_large_amplitude
 G-stab_DRIVERS := gray2001_plate_stability
 G-wp_DRIVERS := gray2001_plate_work_precision

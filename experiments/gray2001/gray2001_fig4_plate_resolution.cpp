@@ -10,11 +10,13 @@
 // period, two half-cycle extremes (the decay per period is 1 - (second / first)^2).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "frame/driver.hpp"
 #include "core/materials.hpp"
 #include "gray2001/scenes/plate_run.hpp"
+#include "gray2001/scenes/plate_run_cache.hpp"
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig4_plate_resolution", "G-fig4", "Gray et al. 2001 Fig 4: plate tip y(t) against resolution");
@@ -32,6 +34,11 @@ int main(int argc, char** argv) {
   d.param("eps", scheme.eps_artificial, "artificial stress factor (Sec 6: 0.3; 0 = none: the energy study of issue 15)").non_negative();
   d.param("eps-xsph", scheme.eps_xsph, "XSPH factor (Sec 3: 0.5; 0 = particles move with their own velocity)").non_negative();
   d.param("periods", periods, "half the longest run, in theoretical periods (runs stop at the second crossing)").positive();
+  std::vector<std::string> step_only;
+  bool list_runs = false;
+  d.param("step-runs", step_only, "step only these runs (names as printed by --list-runs) into the store of runs (SPH_RUN_CACHE), "
+          "for the run that collects them (Makefile run_rules); no output is written");
+  d.param("list-runs", list_runs, "print the names of the runs and exit");
 
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("n")) ns = {4, 6, 8};
@@ -39,40 +46,66 @@ int main(int argc, char** argv) {
     if (ns.size() < 2) throw std::invalid_argument("need at least two resolutions");
     const double mu = scheme.mu, alpha = scheme.alpha;
     const double T_theory = scenes::plate_theory_period(mu, 2.0, 20.0);
-    // wall_s: the run's time loop; nan for a run served from the store of runs (a prefix of a longer run, not timed).
-    auto table = d.csv("runs.csv", {"n", "alpha", "particles", "dt", "steps", "wall_s", "T_sph", "amp_first", "amp_second",
-                                    "decay_per_period", "T_over_theory"});
     struct Run { int n; double alpha; };
     std::vector<Run> runs;
     for (int n : ns) runs.push_back({n, alpha});
     for (double a : alphas) runs.push_back({ns.front(), a});
-    std::vector<double> T_of_n, A_of_n;  // period and first amplitude at the study's alpha, by n
-    for (const Run& run : runs) {
-      sph::GrayParameters run_scheme = scheme;
-      run_scheme.alpha = run_scheme.beta = run.alpha;
-      const scenes::PlateRunSpec s = scenes::fig4_plate_run(run.n, Vf, clamp, run_scheme, periods);
+    // Each run named (the unit of a job: experiments/targets.mk G-fig4_RUNS); run_plate serves a stored one.
+    auto tag_of = [](const Run& run) {
       std::ostringstream tag;
       tag << "n" << run.n << "_alpha" << run.alpha;
-      const auto r = scenes::run_plate(s, {}, "plate " + tag.str());
-      if (!r.blow_up.empty()) throw std::runtime_error(tag.str() + ": " + r.blow_up);
+      return tag.str();
+    };
+    auto spec_of = [&](const Run& run) {
+      sph::GrayParameters run_scheme = scheme;
+      run_scheme.alpha = run_scheme.beta = run.alpha;
+      return scenes::fig4_plate_run(run.n, Vf, clamp, run_scheme, periods);
+    };
+    if (list_runs) {
+      for (const Run& run : runs) std::printf("%s\n", tag_of(run).c_str());
+      return;
+    }
+    if (!step_only.empty()) {
+      for (const auto& name : step_only) {
+        const auto it = std::find_if(runs.begin(), runs.end(), [&](const Run& r) { return tag_of(r) == name; });
+        if (it == runs.end()) {  // e.g. a full-resolution run's name given to a --quick run
+          std::fprintf(stderr, "run %s is not among this driver's runs (see --list-runs): nothing to step\n", name.c_str());
+          continue;
+        }
+        if (scenes::plate_run_cache_dir().empty())
+          std::fprintf(stderr, "run %s: the store of runs is off (SPH_RUN_CACHE unset or a dirty build): stepped for nothing\n",
+                       name.c_str());
+        scenes::run_plate(spec_of(*it), {}, "plate " + name);
+      }
+      return;
+    }
+    // wall_s: the run's time loop; for a run served from the store of runs, the stepping run's loop up to its last sample.
+    auto table = d.csv("runs.csv", {"n", "alpha", "particles", "dt", "steps", "wall_s", "T_sph", "amp_first", "amp_second",
+                                    "decay_per_period", "T_over_theory"});
+    std::vector<double> T_of_n, A_of_n;  // period and first amplitude at the study's alpha, by n
+    for (const Run& run : runs) {
+      const scenes::PlateRunSpec s = spec_of(run);
+      const std::string tag_text = tag_of(run);
+      const auto r = scenes::run_plate(s, {}, "plate " + tag_text);
+      if (!r.blow_up.empty()) throw std::runtime_error(tag_text + ": " + r.blow_up);
       const double T = scenes::period_from_crossings(scenes::zero_crossings(r.trace));
       const auto ext = scenes::half_cycle_extremes(r.trace);
       const double a1 = ext.size() > 0 ? std::abs(ext[0]) : NAN, a2 = ext.size() > 1 ? std::abs(ext[1]) : NAN;
       const double decay = 1.0 - (a2 / a1) * (a2 / a1);  // two half cycles make a period
       table.row(run.n, run.alpha, r.particles, r.dt, r.steps, r.wall_s, T, a1, a2, decay, T / T_theory);
-      auto trace = d.csv("tip_" + tag.str() + ".csv", {"t", "y_tip", "kinetic", "elastic", "power_artificial_stress", "power_viscosity", "power_xsph"});
+      auto trace = d.csv("tip_" + tag_text + ".csv", {"t", "y_tip", "kinetic", "elastic", "power_artificial_stress", "power_viscosity", "power_xsph"});
       for (const auto& smp : r.trace) trace.row(smp.t, smp.y, smp.ke, smp.ee, smp.p_art, smp.p_visc, smp.p_xsph);
-      d.value("T_" + tag.str(), T, "period from the zero crossings");
-      d.value("amplitude_" + tag.str(), a1, "first extreme of the tip displacement");
-      d.value("decay_per_period_" + tag.str(), decay, "1 - (second extreme / first)^2");
+      d.value("T_" + tag_text, T, "period from the zero crossings");
+      d.value("amplitude_" + tag_text, a1, "first extreme of the tip displacement");
+      d.value("decay_per_period_" + tag_text, decay, "1 - (second extreme / first)^2");
       // Kinetic + elastic energy (issue 15 a: at n = 30 it grows, by the work of the artificial stress).
       if (!r.trace.empty()) {
         const double E0 = r.trace.front().ke + r.trace.front().ee;
         double E_max = E0;
         for (const auto& smp : r.trace) E_max = std::max(E_max, smp.ke + smp.ee);
         const double dE = (r.trace.back().ke + r.trace.back().ee) / E0 - 1;
-        d.value("energy_change_" + tag.str(), dE, "(kinetic + elastic) at the run's end (second crossing) over the start, minus 1");
-        d.value("energy_peak_" + tag.str(), E_max / E0 - 1, "largest (kinetic + elastic) over the start, minus 1");
+        d.value("energy_change_" + tag_text, dE, "(kinetic + elastic) at the run's end (second crossing) over the start, minus 1");
+        d.value("energy_peak_" + tag_text, E_max / E0 - 1, "largest (kinetic + elastic) over the start, minus 1");
         // The budget (GraySolver::PowerBudget): the works of the artificial stress, the viscosity and XSPH
         // (trapezoids over the samples) and what they leave of the energy change (the stress power's own
         // mismatch, the clamp, the sampling).
@@ -83,10 +116,10 @@ int main(int argc, char** argv) {
           W_visc += 0.5 * dt * (r.trace[i].p_visc + r.trace[i - 1].p_visc);
           W_xsph += 0.5 * dt * (r.trace[i].p_xsph + r.trace[i - 1].p_xsph);
         }
-        d.value("work_artificial_stress_" + tag.str(), W_art / E0, "work of the artificial stress over the run / initial energy");
-        d.value("work_viscosity_" + tag.str(), W_visc / E0, "work of the viscosity over the run / initial energy (<= 0)");
-        d.value("work_xsph_" + tag.str(), W_xsph / E0, "work of XSPH's velocity (GraySolver::PowerBudget::xsph) over the run / initial energy");
-        d.value("energy_residual_" + tag.str(), dE - (W_art + W_visc + W_xsph) / E0,
+        d.value("work_artificial_stress_" + tag_text, W_art / E0, "work of the artificial stress over the run / initial energy");
+        d.value("work_viscosity_" + tag_text, W_visc / E0, "work of the viscosity over the run / initial energy (<= 0)");
+        d.value("work_xsph_" + tag_text, W_xsph / E0, "work of XSPH's velocity (GraySolver::PowerBudget::xsph) over the run / initial energy");
+        d.value("energy_residual_" + tag_text, dE - (W_art + W_visc + W_xsph) / E0,
                 "energy change minus the three works, / initial energy: the part no counted term explains");
       }
       if (run.alpha == alpha) T_of_n.push_back(T), A_of_n.push_back(a1);

@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
             d.value("T_bound_" + theory_key(H, mu).substr(9), (1.0 + excess) * scenes::plate_theory_period(mu, H - paper_dp, 20.0),
                     "T_theory (H - paper_dp) x (1 + period_excess_coarse_reference): the rows' upper bound");
     }
-    // wall_s: the run's time loop; nan for a run served from the store of runs (a prefix of a longer run, not timed).
+    // wall_s: the run's time loop; for a run served from the store of runs, the stepping run's loop up to its last sample.
     auto periods_csv = d.csv("periods.csv", {"table", "H", "Vf", "mu", "dp", "particles", "dt", "steps", "wall_s",
                                              "T_sph", "T_theory_thin", "T_theory_reading", "error_vs_theory",
                                              "tip_amplitude", "fragments"});

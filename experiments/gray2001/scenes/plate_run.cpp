@@ -50,9 +50,12 @@ PlateRunResult run_plate(const PlateRunSpec& s,
   for (std::size_t a = 0; a < body.size(); ++a) free_particles[a] = body.motion[a] == sph::Motion::Free;
 
   auto fragments = [&] { return sph::find_fragments(body.x, body.box, s.fracture_link * s.plate.dp, free_particles).count; };
-  std::vector<long> sample_steps;  // the step of every sample, for the store
+  std::vector<long> sample_steps;    // the step of every sample, for the store
+  std::vector<double> sample_wall;   // the time loop's seconds at every sample, for the store
+  sph::Progress progress(progress_label, s.t_end);
   auto sample = [&](std::size_t pieces) {
     sample_steps.push_back(solver.steps());
+    sample_wall.push_back(progress.elapsed_s());
     r.trace.push_back({solver.time(), body.x[plate.tip].y() - y0, sph::kinetic_energy(solver), solver.elastic_energy(), pieces});
     if (s.power_budget) {
       const auto p = solver.power_budget();
@@ -91,7 +94,6 @@ PlateRunResult run_plate(const PlateRunSpec& s,
     }
     return false;
   };
-  sph::Progress progress(progress_label, s.t_end);
   const auto outcome = sph::run(solver, {r.dt, s.max_steps, s.t_end}, observe,
                                 [&](const sph::GraySolver& sv) { progress.update(sv.time(), sv.steps()); });
   r.blow_up = outcome.blow_up;
@@ -99,7 +101,7 @@ PlateRunResult run_plate(const PlateRunSpec& s,
   r.wall_s = progress.elapsed_s();
   // A run that stopped after a fracture took its last sample off the sample cadence: not stored.
   if (s.run_after_fracture < 0)
-    store_plate_run(s, {r.trace, sample_steps, r.dt, s.t_end, r.fracture_time, r.particles, s.power_budget}, store);
+    store_plate_run(s, {r.trace, sample_steps, sample_wall, r.dt, s.t_end, r.fracture_time, r.particles, s.power_budget}, store);
   return r;
 }
 

@@ -39,12 +39,13 @@ std::optional<StoredPlateRun> load(const std::string& dir, const std::string& ke
   r.power_budget = power != 0;
   r.trace.resize(n);
   r.steps.resize(n);
+  r.wall.resize(n);
   for (std::uint64_t k = 0; k < n; ++k) {
     TipSample& t = r.trace[k];
     std::uint64_t fragments = 0;
     std::int64_t step = 0;
     if (!get(in, t.t) || !get(in, t.y) || !get(in, t.ke) || !get(in, t.ee) || !get(in, fragments) ||
-        !get(in, t.p_art) || !get(in, t.p_visc) || !get(in, t.p_xsph) || !get(in, step))
+        !get(in, t.p_art) || !get(in, t.p_visc) || !get(in, t.p_xsph) || !get(in, step) || !get(in, r.wall[k]))
       return std::nullopt;  // truncated: treat as absent
     t.fragments = fragments;
     r.steps[k] = step;
@@ -94,7 +95,7 @@ std::optional<PlateRunResult> serve_plate_run(const PlateRunSpec& s, const std::
     r.particles = stored->particles;
     r.dt = stored->dt;
     r.fracture_time = (stored->fracture_time >= 0 && stored->fracture_time <= r.trace.back().t) ? stored->fracture_time : -1;
-    r.wall_s = NAN;  // not stepped here: its wall time is part of the stored run's, not measured for this prefix (0 read as a time)
+    r.wall_s = stored->wall[k];  // not stepped here: the stepping run's time loop up to the prefix's last sample
     r.reused = true;
     return r;
   }
@@ -119,6 +120,7 @@ void store_plate_run(const PlateRunSpec& s, const StoredPlateRun& run, const std
     put(out, static_cast<std::uint64_t>(t.fragments));
     put(out, t.p_art); put(out, t.p_visc); put(out, t.p_xsph);
     put(out, static_cast<std::int64_t>(run.steps[k]));
+    put(out, run.wall[k]);
   }
   sph::run_store_write(dir, "plate", key, out.str(), variant(run.power_budget));
 }

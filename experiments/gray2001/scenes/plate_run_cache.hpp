@@ -26,6 +26,7 @@ namespace scenes {
 struct StoredPlateRun {
   std::vector<TipSample> trace;
   std::vector<long> steps;   ///< solver steps at each sample
+  std::vector<double> wall;  ///< seconds of the time loop up to each sample, in the run that stepped it
   double dt = 0, t_end = 0, fracture_time = -1;
   std::size_t particles = 0;
   bool power_budget = false;
