@@ -113,4 +113,20 @@ void run_store_write(const std::string& dir, const std::string& kind, const std:
   prune_other_versions(dir, kind);
 }
 
+void step_named_runs(const std::vector<std::string>& names, const std::vector<std::string>& planned,
+                     const std::function<void(std::size_t)>& step) {
+  for (const auto& name : names) {
+    std::size_t i = 0;
+    while (i < planned.size() && planned[i] != name) ++i;
+    if (i == planned.size()) {
+      std::fprintf(stderr, "run %s is not among this driver's runs (see --list-runs): nothing to step\n", name.c_str());
+      continue;
+    }
+    if (run_store_dir().empty())
+      std::fprintf(stderr, "run %s: the store of runs is off (SPH_RUN_CACHE unset or a dirty build): stepped for nothing\n",
+                   name.c_str());
+    step(i);
+  }
+}
+
 }  // namespace sph

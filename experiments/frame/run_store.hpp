@@ -11,9 +11,12 @@
 #pragma once
 
 #include <istream>
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace sph {
 
@@ -37,6 +40,13 @@ std::optional<std::string> run_store_read(const std::string& dir, const std::str
 /// versions. A full disk loses the reuse, not the run.
 void run_store_write(const std::string& dir, const std::string& kind, const std::string& key, const std::string& payload,
                      const std::string& variant = "");
+
+/// A run job's work (Makefile run_rules: a driver given the names of some of its planned runs): steps
+/// step(i) for each name that is planned[i], in the order given, into the store; a name not planned (e.g. a
+/// full-resolution run's name given to a --quick run) is reported and skipped, and a store that is off is reported
+/// (the run is then stepped for nothing).
+void step_named_runs(const std::vector<std::string>& names, const std::vector<std::string>& planned,
+                     const std::function<void(std::size_t)>& step);
 
 /// Payloads in binary: every bit of a value (the same host reads them back: the key names its build).
 template <class T>

@@ -16,7 +16,7 @@
 #include "frame/driver.hpp"
 #include "core/materials.hpp"
 #include "gray2001/scenes/plate_run.hpp"
-#include "gray2001/scenes/plate_run_cache.hpp"
+#include "frame/run_store.hpp"
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig4_plate_resolution", "G-fig4", "Gray et al. 2001 Fig 4: plate tip y(t) against resolution");
@@ -66,17 +66,9 @@ int main(int argc, char** argv) {
       return;
     }
     if (!step_only.empty()) {
-      for (const auto& name : step_only) {
-        const auto it = std::find_if(runs.begin(), runs.end(), [&](const Run& r) { return tag_of(r) == name; });
-        if (it == runs.end()) {  // e.g. a full-resolution run's name given to a --quick run
-          std::fprintf(stderr, "run %s is not among this driver's runs (see --list-runs): nothing to step\n", name.c_str());
-          continue;
-        }
-        if (scenes::plate_run_cache_dir().empty())
-          std::fprintf(stderr, "run %s: the store of runs is off (SPH_RUN_CACHE unset or a dirty build): stepped for nothing\n",
-                       name.c_str());
-        scenes::run_plate(spec_of(*it), {}, "plate " + name);
-      }
+      std::vector<std::string> names;
+      for (const Run& run : runs) names.push_back(tag_of(run));
+      sph::step_named_runs(step_only, names, [&](std::size_t i) { scenes::run_plate(spec_of(runs[i]), {}, "plate " + names[i]); });
       return;
     }
     // wall_s: the run's time loop; for a run served from the store of runs, the stepping run's loop up to its last sample.

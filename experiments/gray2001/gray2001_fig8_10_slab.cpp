@@ -33,7 +33,6 @@
 //   columns more than 2 dp apart (CHOSEN: a column's worth of void), with its distance from the nearer band
 //   edge. With eps = 0 the instability pairs columns all along the slab and the surface rows hold the
 //   pieces together, so the ends part (fracture_time) well after the first gap opens at a junction.
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -196,17 +195,9 @@ int main(int argc, char** argv) {
       return done.result;
     };
     if (!step_only.empty()) {
-      for (const auto& name : step_only) {
-        const auto it = std::find_if(plan.begin(), plan.end(), [&](const Planned& r) { return r.name == name; });
-        if (it == plan.end()) {  // e.g. a study run's name given to a --quick run, which has no study
-          std::fprintf(stderr, "run %s is not among this driver's runs (see --list-runs): nothing to step\n", name.c_str());
-          continue;
-        }
-        if (sph::run_store_dir().empty())
-          std::fprintf(stderr, "run %s: the store of runs is off (SPH_RUN_CACHE unset or a dirty build): stepped for nothing\n",
-                       name.c_str());
-        step(*it);
-      }
+      std::vector<std::string> names;
+      for (const auto& r : plan) names.push_back(r.name);
+      sph::step_named_runs(step_only, names, [&](std::size_t i) { step(plan[i]); });
       return;
     }
     std::vector<scenes::SlabRunResult> result;

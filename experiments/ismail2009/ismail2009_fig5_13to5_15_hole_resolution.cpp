@@ -180,17 +180,9 @@ int main(int argc, char** argv) {
     };
     std::map<std::string, scenes::HoleResult> result;
     if (!only.empty()) {
-      for (const auto& name : only) {
-        const auto it = planned(name);
-        if (it == plan.end()) {  // e.g. a full-resolution run's name given to a --quick study
-          std::fprintf(stderr, "run %s is not in this study (see --list-runs): nothing to step\n", name.c_str());
-          continue;
-        }
-        if (sph::run_store_dir().empty())
-          std::fprintf(stderr, "run %s: the store of runs is off (SPH_RUN_CACHE unset or a dirty build): stepped for "
-                       "nothing\n", name.c_str());
-        scenes::run_hole(it->second);
-      }
+      std::vector<std::string> names;
+      for (const auto& [name, _] : plan) names.push_back(name);
+      sph::step_named_runs(only, names, [&](std::size_t i) { scenes::run_hole(plan[i].second); });
       return;
     }
     for (const auto& [name, q] : plan) result.emplace(name, scenes::run_hole(q));
