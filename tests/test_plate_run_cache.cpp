@@ -134,3 +134,47 @@ TEST_F(PlateRunCache, OffWithoutADirectoryAndTheKeyNamesEveryParameter) {
   s.scheme.mu = std::nextafter(s.scheme.mu, 1.0);  // one bit
   EXPECT_NE(base, scenes::plate_run_key(s));
 }
+
+// A sweep point (G-stab) stops at a fracture, a blow-up or t_end: the prefix store cannot serve it, the whole-run
+// store does, with every number of the stepped run and its message.
+TEST_F(PlateRunCache, AWholeRunIsServedBitForBitUnderTheKeyOfItsStop) {
+  auto point = short_plate(-1);
+  point.t_end = 30;
+  point.run_after_fracture = 0;
+  point.scheme.cfl = 3.0;  // far past the plate's stable factor (1.25): it blows up or breaks before t_end
+  store_off();
+  const auto stepped = scenes::run_plate_stored(point, "point");
+  EXPECT_FALSE(stepped.reused);
+  EXPECT_TRUE(!stepped.blow_up.empty() || stepped.fracture_time >= 0);
+  EXPECT_FALSE(scenes::run_plate_stored(point, "point").reused);  // the store is off
+  store_on();
+  const auto first = scenes::run_plate_stored(point, "point");
+  EXPECT_FALSE(first.reused);
+  const auto served = scenes::run_plate_stored(point, "point");
+  EXPECT_TRUE(served.reused);
+  expect_identical(served, stepped);
+  EXPECT_EQ(served.blow_up, stepped.blow_up);
+  EXPECT_TRUE(same_bits(served.wall_s, first.wall_s));  // the stepping run's time
+  EXPECT_FALSE(scenes::run_plate(point).reused);          // not a run the prefix store holds
+  // Every field that decides where a run stops is in the whole-run key (not in the trajectory's).
+  const auto base = scenes::plate_whole_run_key(point);
+  auto s = point;
+  s.t_end = 31;
+  EXPECT_NE(base, scenes::plate_whole_run_key(s));
+  s = point;
+  s.max_steps = 10;
+  EXPECT_NE(base, scenes::plate_whole_run_key(s));
+  s = point;
+  s.run_after_fracture = 1;
+  EXPECT_NE(base, scenes::plate_whole_run_key(s));
+  s = point;
+  s.stop_after_crossings = 2;
+  EXPECT_NE(base, scenes::plate_whole_run_key(s));
+  s = point;
+  s.power_budget = true;
+  EXPECT_NE(base, scenes::plate_whole_run_key(s));
+  s = point;
+  s.scheme.cfl = 2.5;
+  EXPECT_NE(base, scenes::plate_whole_run_key(s));
+  EXPECT_FALSE(scenes::run_plate_stored(s, "point").reused);
+}

@@ -3,6 +3,7 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -111,6 +112,18 @@ void run_store_write(const std::string& dir, const std::string& kind, const std:
   std::filesystem::rename(tmp, path, ec);
   if (ec) std::remove(tmp.c_str());
   prune_other_versions(dir, kind);
+}
+
+void store_put_text(std::ostream& o, const std::string& s) {
+  store_put(o, static_cast<std::uint64_t>(s.size()));
+  o.write(s.data(), static_cast<std::streamsize>(s.size()));
+}
+
+bool store_get_text(std::istream& i, std::string& s) {
+  std::uint64_t n = 0;
+  if (!store_get(i, n) || n > (std::uint64_t{1} << 34)) return false;  // a corrupt length: absent, not an allocation
+  s.resize(n);
+  return static_cast<bool>(i.read(s.data(), static_cast<std::streamsize>(n)));
 }
 
 void step_named_runs(const std::vector<std::string>& names, const std::vector<std::string>& planned,

@@ -53,5 +53,8 @@ template <class T>
 void store_put(std::ostream& o, const T& v) { o.write(reinterpret_cast<const char*>(&v), sizeof v); }
 template <class T>
 bool store_get(std::istream& i, T& v) { return static_cast<bool>(i.read(reinterpret_cast<char*>(&v), sizeof v)); }
+/// A text in a payload: its length, then its bytes.
+void store_put_text(std::ostream& o, const std::string& s);
+bool store_get_text(std::istream& i, std::string& s);
 
 }  // namespace sph

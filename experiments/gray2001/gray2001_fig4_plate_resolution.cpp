@@ -16,7 +16,7 @@
 #include "frame/driver.hpp"
 #include "core/materials.hpp"
 #include "gray2001/scenes/plate_run.hpp"
-#include "frame/run_store.hpp"
+#include "frame/run_jobs.hpp"
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig4_plate_resolution", "G-fig4", "Gray et al. 2001 Fig 4: plate tip y(t) against resolution");
@@ -34,11 +34,7 @@ int main(int argc, char** argv) {
   d.param("eps", scheme.eps_artificial, "artificial stress factor (Sec 6: 0.3; 0 = none: the energy study of issue 15)").non_negative();
   d.param("eps-xsph", scheme.eps_xsph, "XSPH factor (Sec 3: 0.5; 0 = particles move with their own velocity)").non_negative();
   d.param("periods", periods, "half the longest run, in theoretical periods (runs stop at the second crossing)").positive();
-  std::vector<std::string> step_only;
-  bool list_runs = false;
-  d.param("step-runs", step_only, "step only these runs (names as printed by --list-runs) into the store of runs (SPH_RUN_CACHE), "
-          "for the run that collects them (Makefile run_rules); no output is written");
-  d.param("list-runs", list_runs, "print the names of the runs and exit");
+  const sph::RunJobs jobs(d);  // --step-runs, --list-runs
 
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("n")) ns = {4, 6, 8};
@@ -61,16 +57,9 @@ int main(int argc, char** argv) {
       run_scheme.alpha = run_scheme.beta = run.alpha;
       return scenes::fig4_plate_run(run.n, Vf, clamp, run_scheme, periods);
     };
-    if (list_runs) {
-      for (const Run& run : runs) std::printf("%s\n", tag_of(run).c_str());
-      return;
-    }
-    if (!step_only.empty()) {
-      std::vector<std::string> names;
-      for (const Run& run : runs) names.push_back(tag_of(run));
-      sph::step_named_runs(step_only, names, [&](std::size_t i) { scenes::run_plate(spec_of(runs[i]), {}, "plate " + names[i]); });
-      return;
-    }
+    std::vector<std::string> names;
+    for (const Run& run : runs) names.push_back(tag_of(run));
+    if (jobs.handled(names, [&](std::size_t i) { scenes::run_plate(spec_of(runs[i]), {}, "plate " + names[i]); })) return;
     // wall_s: the run's time loop; for a run served from the store of runs, the stepping run's loop up to its last sample.
     auto table = d.csv("runs.csv", {"n", "alpha", "particles", "dt", "steps", "wall_s", "T_sph", "amp_first", "amp_second",
                                     "decay_per_period", "T_over_theory"});

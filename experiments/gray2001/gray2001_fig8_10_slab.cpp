@@ -40,7 +40,7 @@
 #include <sstream>
 
 #include "frame/driver.hpp"
-#include "frame/run_store.hpp"
+#include "frame/run_jobs.hpp"
 #include "core/run_loop.hpp"
 #include "io/snapshot.hpp"
 #include "gray2001/scenes/plate_run.hpp"
@@ -96,11 +96,7 @@ int main(int argc, char** argv) {
   d.param("runs", runs, "which of the runs eps = 0 and eps = 0.3 to do (e.g. --runs 0.3 for a fine eps = 0.3 run only)").non_negative();
   d.param("study-dps", study_dps, "further spacings of the eps = 0.3 resolution study (0: none)").non_negative();
   scenes::SlabSpec seeding;  // the perfect lattice by default; a jitter and seed draw one member of an ensemble
-  std::vector<std::string> step_only;
-  bool list_runs = false;
-  d.param("step-runs", step_only, "step only these runs (names as printed by --list-runs) into the store of runs (SPH_RUN_CACHE), "
-          "for the run that collects them (Makefile run_rules); of the outputs only the main runs' snapshots and frames are written");
-  d.param("list-runs", list_runs, "print the names of the runs and exit");
+  const sph::RunJobs jobs(d, "of the outputs only the main runs' snapshots and frames are written");
   d.param("jitter", seeding.jitter, "random displacement of every particle, up to this x dp (0: the lattice; SlabSpec::jitter)").non_negative();
   d.param("seed", seeding.seed, "seed of the jitter");
 
@@ -151,10 +147,6 @@ int main(int argc, char** argv) {
       if (!(sdp > 0)) throw std::invalid_argument("study-dps: spacings must be > 0 (0: no study)");
       plan.push_back({"eps0.3_" + dp_tag(sdp), 0.3, sdp, false});
     }
-    if (list_runs) {
-      for (const auto& r : plan) std::printf("%s\n", r.name.c_str());
-      return;
-    }
     auto step = [&](const Planned& run) {  // stepped here (or served), with the main runs' snapshots and frames
       const auto s = spec(run.eps, run.dp);
       const std::string tag = run.eps > 0 ? "eps0.3" : "eps0";
@@ -194,12 +186,9 @@ int main(int argc, char** argv) {
       scenes::store_slab_run(s, files_tag, done);
       return done.result;
     };
-    if (!step_only.empty()) {
-      std::vector<std::string> names;
-      for (const auto& r : plan) names.push_back(r.name);
-      sph::step_named_runs(step_only, names, [&](std::size_t i) { step(plan[i]); });
-      return;
-    }
+    std::vector<std::string> names;
+    for (const auto& r : plan) names.push_back(r.name);
+    if (jobs.handled(names, [&](std::size_t i) { step(plan[i]); })) return;
     std::vector<scenes::SlabRunResult> result;
     for (const auto& run : plan) result.push_back(step(run));
     // wall_s: of the run where it was stepped (a run job, or this process).

@@ -6,15 +6,24 @@
 //
 // (1) is repeated at the papers' dp = 0.1 (--paper-sweep-dp, 0 skips; issue 14 item 5: a margin measured
 // only at 8 across H said nothing of the resolution the tables run at), over --paper-cfl-values.
+// Every run is named (--list-runs true prints them): each sweep point and the four runs of (2)-(4) are jobs of
+// their own in make figures (experiments/targets.mk G-stab_RUNS, --step-runs; issue 17), which the collecting run
+// reads back from the store of runs. A job steps its point whatever the points below it gave; the collecting run
+// stops each sweep at its first failure, as before.
 // CHOSEN parameters: H = 2, L = 20, dp = 0.25 (8 across H: the sweep needs many runs), mu = 0.6 and
 // V_f = 0.01 (the shortest period of Table 1), the other parameters as the table driver. A run "blows
 // up" when the solver stops it (non-finite state, density below 5% of rho0, or |v| > 100 c0) or when the
 // plate breaks (fracture at a link of 1.5 dp).
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <sstream>
 
 #include "frame/driver.hpp"
 #include "core/materials.hpp"
+#include "frame/run_jobs.hpp"
 #include "gray2001/scenes/plate_run.hpp"
+#include "gray2001/scenes/plate_run_cache.hpp"
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_plate_stability", "G-stab", "Stability of the plate: time-step sweep, long run, perturbed lattice");
@@ -33,6 +42,7 @@ int main(int argc, char** argv) {
   d.param("long-periods", long_periods, "length of the long run in theoretical periods").positive();
   d.param("perturbation", perturbation, "random initial displacement / dp of the perturbed run").non_negative();
   d.param("cfl", scheme.cfl, "time-step factor of the long and perturbed runs").positive();
+  const sph::RunJobs jobs(d);  // --step-runs, --list-runs
 
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("long-periods")) long_periods = 1.5;  // three crossings: first and last period
@@ -52,22 +62,64 @@ int main(int argc, char** argv) {
       s.run_after_fracture = 0.0;
       return s;
     };
-    // (1) Time-step sweeps: at dp, and at the papers' spacing (values suffixed _dp<spacing>).
+    // (1) Time-step sweeps at dp and at the papers' spacing (values suffixed _dp<spacing>); their points.
+    struct Point { double spacing, eps, cfl; std::string name; };
+    std::vector<Point> points;
+    auto add_sweep = [&](double spacing, const std::vector<double>& factors) {
+      for (const double eps : {0.0, 0.3})
+        for (const double cfl : factors) {
+          std::ostringstream name;
+          name << "sweep_dp" << sph::format_number(spacing) << "_eps" << eps << "_cfl" << cfl;
+          points.push_back({spacing, eps, cfl, name.str()});
+        }
+    };
+    add_sweep(dp, cfls);
+    if (paper_dp > 0) add_sweep(paper_dp, paper_cfls);
+    auto point_spec = [&](const Point& q) {
+      auto s = base();
+      s.plate.dp = q.spacing;
+      s.scheme.cfl = q.cfl;
+      s.scheme.eps_artificial = q.eps;
+      s.options.artificial_stress = q.eps > 0;
+      s.t_end = sweep_time;
+      return s;
+    };
+    auto run_point = [&](const Point& q) {
+      return scenes::run_plate_stored(point_spec(q), "cfl sweep dp " + sph::format_number(q.spacing));
+    };
+    // (2) The long run, (3) the perturbed lattice against an unperturbed reference of the same length, (4) the
+    // reference at half the step.
+    struct Whole { std::string name; double periods, shake, cfl_scale; };
+    const std::vector<Whole> wholes{{"reference", 1.0, 0.0, 1.0}, {"halved_dt", 1.0, 0.0, 0.5},
+                                    {"perturbed", 1.0, perturbation, 1.0}, {"long", long_periods, 0.0, 1.0}};
+    auto whole_spec = [&](const Whole& w) {
+      auto s = base();
+      s.scheme.cfl *= w.cfl_scale;
+      s.t_end = w.periods * T * 2.0;  // margin: coarse plates run up to 1.5x the thin-plate period (G-fig4)
+      s.stop_after_crossings = static_cast<int>(std::lround(2 * w.periods));
+      s.plate.perturbation = w.shake;
+      s.run_after_fracture = -1;
+      return s;
+    };
+    std::vector<std::string> names;
+    for (const Point& q : points) names.push_back(q.name);
+    for (const Whole& w : wholes) names.push_back(w.name);
+    // A job: run_plate_stored stores a point whole, run_plate the runs of (2)-(4) (they stop at crossings).
+    if (jobs.handled(names, [&](std::size_t i) {
+          if (i < points.size()) run_point(points[i]);
+          else scenes::run_plate(whole_spec(wholes[i - points.size()]), {}, wholes[i - points.size()].name);
+        }))
+      return;
     auto sweep = d.csv("cfl_sweep.csv", {"dp", "eps", "cfl", "dt", "steps", "t_reached", "blew_up", "fractured", "message"});
-    auto sweep_at = [&](double spacing, const std::vector<double>& factors, const std::string& suffix) {
+    auto sweep_at = [&](double spacing, const std::string& suffix) {
       for (const double eps : {0.0, 0.3}) {
         double largest_stable = 0;
-        for (const double cfl : factors) {
-          auto s = base();
-          s.plate.dp = spacing;
-          s.scheme.cfl = cfl;
-          s.scheme.eps_artificial = eps;
-          s.options.artificial_stress = eps > 0;
-          s.t_end = sweep_time;
-          const auto r = scenes::run_plate(s, {}, "cfl sweep dp " + sph::format_number(spacing));
+        for (const Point& q : points) {
+          if (q.spacing != spacing || q.eps != eps) continue;
+          const auto r = run_point(q);
           const bool blew = !r.blow_up.empty(), broke = r.fracture_time >= 0;
-          sweep.row(spacing, eps, cfl, r.dt, r.steps, r.trace.back().t, blew ? 1 : 0, broke ? 1 : 0, r.blow_up);
-          if (!blew && !broke && cfl > largest_stable) largest_stable = cfl;
+          sweep.row(spacing, eps, q.cfl, r.dt, r.steps, r.trace.back().t, blew ? 1 : 0, broke ? 1 : 0, r.blow_up);
+          if (!blew && !broke && q.cfl > largest_stable) largest_stable = q.cfl;
           if (blew || broke) break;  // larger factors only fail sooner
         }
         const std::string e = (eps > 0 ? "eps0.3" : "eps0") + suffix;
@@ -75,40 +127,34 @@ int main(int argc, char** argv) {
         d.value("stability_margin_" + e, largest_stable / scheme.cfl, "largest stable factor / the factor of the runs (--cfl)");
       }
     };
-    sweep_at(dp, cfls, "");
-    if (paper_dp > 0) sweep_at(paper_dp, paper_cfls, "_dp" + sph::format_number(paper_dp));
-    // (2) The long run and (3) the perturbed lattice, against an unperturbed reference of the same length.
+    sweep_at(dp, "");
+    if (paper_dp > 0) sweep_at(paper_dp, "_dp" + sph::format_number(paper_dp));
     auto runs = d.csv("runs.csv", {"run", "periods", "steps", "wall_s", "T_first", "T_last", "fragments", "energy_first", "energy_last"});
-    auto one = [&](const std::string& name, double periods, double shake, double cfl_scale = 1.0) {
-      auto s = base();
-      s.scheme.cfl *= cfl_scale;
-      s.t_end = periods * T * 2.0;  // margin: coarse plates run up to 1.5x the thin-plate period (G-fig4)
-      s.stop_after_crossings = static_cast<int>(std::lround(2 * periods));
-      s.plate.perturbation = shake;
-      s.run_after_fracture = -1;
-      const auto r = scenes::run_plate(s, {}, name);
+    auto one = [&](const std::string& name) {
+      const Whole& w = *std::find_if(wholes.begin(), wholes.end(), [&](const Whole& x) { return x.name == name; });
+      const auto r = scenes::run_plate(whole_spec(w), {}, name);
       if (!r.blow_up.empty()) throw std::runtime_error(name + ": " + r.blow_up);
       const auto c = scenes::zero_crossings(r.trace);
       const double T_first = c.size() >= 2 ? c[1] : NAN;
       const double T_last = c.size() >= 3 ? c[c.size() - 1] - c[c.size() - 3] : NAN;
       const double e0 = r.trace.front().ke + r.trace.front().ee, e1 = r.trace.back().ke + r.trace.back().ee;
-      runs.row(name, periods, r.steps, r.wall_s, T_first, T_last, r.trace.back().fragments, e0, e1);
+      runs.row(name, w.periods, r.steps, r.wall_s, T_first, T_last, r.trace.back().fragments, e0, e1);
       auto trace = d.csv("tip_" + name + ".csv", {"t", "y_tip", "kinetic", "elastic", "fragments"});
       for (const auto& smp : r.trace) trace.row(smp.t, smp.y, smp.ke, smp.ee, smp.fragments);
       return std::tuple<double, double, std::size_t>{T_first, T_last, r.trace.back().fragments};
     };
-    const auto [T_ref, T_ref_last, pieces_ref] = one("reference", 1.0, 0.0);
+    const auto [T_ref, T_ref_last, pieces_ref] = one("reference");
     (void)T_ref_last;
     (void)pieces_ref;
-    const auto [T_half, T_half_last, pieces_half] = one("halved_dt", 1.0, 0.0, 0.5);
+    const auto [T_half, T_half_last, pieces_half] = one("halved_dt");
     (void)T_half_last;
     (void)pieces_half;
     d.value("halved_dt_period_change", std::abs(T_half / T_ref - 1.0), "|T(cfl / 2) / T(cfl) - 1| of the one-period run");
-    const auto [T_pert, T_pert_last, pieces_pert] = one("perturbed", 1.0, perturbation);
+    const auto [T_pert, T_pert_last, pieces_pert] = one("perturbed");
     (void)T_pert_last;
     d.value("perturbed_period_change", std::abs(T_pert / T_ref - 1.0), "|T(perturbed) / T(lattice) - 1|");
     d.value("perturbed_fragments", static_cast<double>(pieces_pert), "pieces after one period (1 = intact)");
-    const auto [T_first, T_last, pieces_long] = one("long", long_periods, 0.0);
+    const auto [T_first, T_last, pieces_long] = one("long");
     d.value("long_run_fragments", static_cast<double>(pieces_long), "pieces after the long run (1 = intact)");
     d.value("long_run_period_drift", std::abs(T_last / T_first - 1.0), "|last period / first period - 1|");
   });

@@ -6,12 +6,17 @@
 // over all resolutions (p scanned on [0.25, 4] in steps of 0.01, T_inf and C linear for each p).
 // Parameters: mu = 0.6, V_f = 0.01 (the shortest period of Table 1: the cheapest full period), the rest
 // as the table driver; each run stops at the tip's second zero crossing (one period).
+// Each run is named (--list-runs true prints them) and is a job of its own in make figures (experiments/targets.mk
+// G-wp_RUNS, --step-runs; issue 17): the job steps it (its wall time is the work axis) and stores it with the time
+// loop's seconds at every sample, and the collecting run reads it back with the stepping job's wall time.
 #include <omp.h>
 
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "frame/driver.hpp"
+#include "frame/run_jobs.hpp"
 #include "core/materials.hpp"
 #include "gray2001/scenes/plate_run.hpp"
 
@@ -27,30 +32,47 @@ int main(int argc, char** argv) {
   d.param("mu", scheme.mu, "shear modulus").non_negative();
   d.param("Vf", Vf, "tip speed / c0");
   d.param("cfl", scheme.cfl, "time-step factor").positive();
+  const sph::RunJobs jobs(d);  // --step-runs, --list-runs
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("n")) ns = {4, 6, 8, 10};
     if (ns.size() < 4) throw std::invalid_argument("a work-precision study needs at least four resolutions");
     const double mu = scheme.mu;
     const double T_th = scenes::plate_theory_period(mu, 2.0, 20.0);
     struct Run { int n, threads; double T, wall; long steps; std::size_t particles; };
-    std::vector<Run> runs;
+    struct Planned { int n, threads; std::string name; };
+    std::vector<Planned> plan;
     for (int n : ns)
-      for (int t : threads) {
-        omp_set_num_threads(t);
-        scenes::PlateRunSpec s;
-        s.plate.dp = 2.0 / n;
-        s.plate.Vf = Vf;
-        s.scheme = scheme;
-        s.t_end = 2.0 * T_th;  // an upper bound: the run stops at the second crossing
-        s.stop_after_crossings = 2;
-        s.sample_dt = 0.5;
-        s.fracture_check_dt = 100.0;  // as Table 1, whose mu = 0.6, V_f = 0.01 row this n = 20 run contains
-        s.reuse = false;               // its wall time is the work axis: always stepped (and stored for Table 1)
-        const auto r = scenes::run_plate(s, {}, "work-precision n" + std::to_string(n));
-        if (!r.blow_up.empty()) throw std::runtime_error(r.blow_up);
-        runs.push_back({n, t, scenes::period_from_crossings(scenes::zero_crossings(r.trace)), r.wall_s, r.steps, r.particles});
-      }
-    // Fit T(n) = T_inf + C n^-p (the period does not depend on the thread count: use the first).
+      for (int t : threads)
+        plan.push_back({n, t, "n" + std::to_string(n) + (threads.size() > 1 ? "_threads" + std::to_string(t) : "")});
+    auto spec_of = [&](const Planned& q) {
+      scenes::PlateRunSpec s;
+      s.plate.dp = 2.0 / q.n;
+      s.plate.Vf = Vf;
+      s.scheme = scheme;
+      s.t_end = 2.0 * T_th;  // an upper bound: the run stops at the second crossing
+      s.stop_after_crossings = 2;
+      s.sample_dt = 0.5;
+      s.fracture_check_dt = 100.0;  // as Table 1, whose mu = 0.6, V_f = 0.01 row this n = 20 run contains
+      return s;
+    };
+    auto step = [&](const Planned& q, bool reuse) {
+      omp_set_num_threads(q.threads);
+      scenes::PlateRunSpec s = spec_of(q);
+      s.reuse = reuse;
+      return scenes::run_plate(s, {}, "work-precision n" + std::to_string(q.n));
+    };
+    std::vector<std::string> names;
+    for (const auto& q : plan) names.push_back(q.name);
+    // A job always steps its run (its wall time is the work axis) and stores it.
+    if (jobs.handled(names, [&](std::size_t i) { step(plan[i], false); })) return;
+    // A run stepped by a job is served with that job's measured wall time; otherwise it is stepped here (and
+    // stored for Table 1).
+    std::vector<Run> runs;
+    for (const auto& q : plan) {
+      const auto r = step(q, true);
+      if (!r.blow_up.empty()) throw std::runtime_error(r.blow_up);
+      runs.push_back({q.n, q.threads, scenes::period_from_crossings(scenes::zero_crossings(r.trace)), r.wall_s, r.steps, r.particles});
+    }
     double best_res = 1e300, T_inf = NAN, C = NAN, p_best = NAN;
     for (double p = 0.25; p <= 4.0 + 1e-12; p += 0.01) {
       double s1 = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;

@@ -7,6 +7,11 @@
 // unchanged within those checks' tolerances; the slab as an ensemble of 8 seeds at each factor (its parting
 // time is one draw of an instability grown from the lattice's seed), compared by the median.
 //
+// Every run is named (--list-runs true prints them): each sweep point, each run of (3) and the fast collision are
+// jobs of their own in make figures (experiments/targets.mk G-stab-rs_RUNS, --step-runs; issue 17), which the
+// collecting run reads back from the store of runs. A job steps its point whatever the points below it gave; the
+// collecting run stops each sweep at its first failure, as before.
+//
 // CHOSEN parameters: rings dp = 0.2 over t = 80 (the first half of the impact, where the rings are most
 // compressed); slab dp = 0.064 over t = 300 (strain 0.075, well into the plastic range); the fast collision
 // at the paper's dp = 0.1. A sweep run FAILS when the solver stops it (non-finite state, density below 5% of
@@ -15,11 +20,15 @@
 // t ~ 190 at any stable step (the tensile instability, G-fig8), which is physics of the scheme, not of the
 // step. The sweep stops at the first failure. Other parameters as the scene drivers.
 #include <algorithm>
+#include <functional>
 #include <cmath>
+#include <cstdio>
+#include <sstream>
 
 #include "frame/driver.hpp"
-#include "gray2001/scenes/rings_run.hpp"
-#include "gray2001/scenes/slab.hpp"
+#include "frame/run_jobs.hpp"
+#include "gray2001/scenes/rings_store.hpp"
+#include "gray2001/scenes/slab_store.hpp"
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_rings_slab_stability", "G-stab-rs", "Stability of the rings and the slab: time-step sweep, fast collision");
@@ -38,6 +47,7 @@ int main(int argc, char** argv) {
   double slab_jitter = 1e-8;
   d.param("slab-seeds", slab_seeds, "members of the slab's parting-time ensemble at each of the two factors").positive();
   d.param("slab-jitter", slab_jitter, "largest random displacement of the ensemble's particles, in dp (SlabSpec::jitter)").non_negative();
+  const sph::RunJobs jobs(d);  // --step-runs, --list-runs
 
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("fast-dp")) fast_dp = 0.2;
@@ -46,21 +56,84 @@ int main(int argc, char** argv) {
     // Every scene's size before the first run: a spacing typed wrong stops here, not after the other scenes.
     for (const double dp : {rings_dp, fast_dp}) { scenes::RingsSpec r; r.dp = dp; scenes::check_size(r); }
     { scenes::SlabSpec s; s.dp = slab_dp; scenes::check_size(s); }
+    if (slab_seeds < 1) throw std::invalid_argument("--slab-seeds must be >= 1");
+    // The specs of every run, and their names.
+    auto sweep_rings = [&](double eps, double f) {
+      scenes::RingsRunSpec rs;
+      rs.rings.dp = rings_dp;
+      rs.rings.gap = std::max(0.2, 2.0 * rings_dp);
+      rs.scheme.cfl = f;
+      rs.options.artificial_stress = eps > 0;
+      rs.scheme.eps_artificial = eps;
+      rs.t_max = rings_time;
+      rs.run_after_contact = -1;
+      return rs;
+    };
+    auto sweep_slab = [&](double eps, double f) {
+      scenes::SlabRunSpec ss;
+      ss.slab.dp = slab_dp;
+      ss.scheme.cfl = f;
+      ss.options.artificial_stress = eps > 0;
+      ss.scheme.eps_artificial = eps;
+      ss.t_max = slab_time;
+      ss.run_after_fracture = 0;
+      return ss;
+    };
+    auto whole_rings = [&](double f) {
+      scenes::RingsRunSpec rs;
+      rs.rings.dp = rings_dp;
+      rs.rings.gap = std::max(0.2, 2.0 * rings_dp);
+      rs.scheme.cfl = f;
+      return rs;
+    };
+    auto ensemble_slab = [&](double f, int seed) {
+      scenes::SlabRunSpec ss;
+      ss.slab.dp = slab_dp;
+      ss.slab.jitter = slab_jitter;
+      ss.slab.seed = static_cast<unsigned>(seed);
+      ss.scheme.cfl = f;
+      return ss;
+    };
+    auto fast_rings = [&] {
+      scenes::RingsRunSpec fs;
+      fs.rings.dp = fast_dp;
+      fs.rings.gap = std::max(0.2, 2.0 * fast_dp);
+      fs.rings.speed = fast_speed;
+      return fs;
+    };
+    const double factors[2] = {cfl, 0.5 * cfl};  // (3): the drivers' factor and half of it
+    auto text = [](double x) { std::ostringstream o; o << x; return o.str(); };
+    auto sweep_name = [&](const char* scene, double eps, double f) { return std::string(scene) + "_eps" + text(eps) + "_cfl" + text(f); };
+    auto slab_label = [&](double f, int seed) { return "slab at cfl " + sph::format_number(f) + ", seed " + std::to_string(seed); };
+    std::vector<std::string> names;
+    std::vector<std::function<void()>> steps;  // a run job's work for each name
+    for (const double eps : {0.0, 0.3})
+      for (const double f : cfls) {
+        names.push_back(sweep_name("rings", eps, f));
+        steps.push_back([&, eps, f] { scenes::run_rings_stored(sweep_rings(eps, f), "rings cfl sweep"); });
+        names.push_back(sweep_name("slab", eps, f));
+        steps.push_back([&, eps, f] { scenes::run_slab_stored(sweep_slab(eps, f), "slab cfl sweep"); });
+      }
+    for (const double f : factors) {
+      names.push_back("rings_cfl" + text(f));
+      steps.push_back([&, f] { scenes::run_rings_stored(whole_rings(f), "rings at cfl " + std::to_string(f)); });
+      if (d.quick()) continue;
+      for (int seed = 0; seed < slab_seeds; ++seed) {
+        names.push_back("slab_cfl" + text(f) + "_seed" + std::to_string(seed));
+        steps.push_back([&, f, seed] { scenes::run_slab_stored(ensemble_slab(f, seed), slab_label(f, seed)); });
+      }
+    }
+    names.push_back("fast");
+    steps.push_back([&] { scenes::run_rings_stored(fast_rings(), "rings fast"); });
+    if (jobs.handled(names, [&](std::size_t i) { steps[i](); })) return;
+
     auto sweep = d.csv("cfl_sweep.csv", {"scene", "eps", "cfl", "dt", "steps", "t_reached", "blew_up", "broke", "failed", "message"});
     for (const double eps : {0.0, 0.3}) {
       const std::string e = eps > 0 ? "eps0.3" : "eps0";
       double stable_rings = 0, stable_slab = 0;
       bool rings_baseline_broke = false, slab_baseline_broke = false;
       for (const double cfl : cfls) {
-        scenes::RingsRunSpec rs;
-        rs.rings.dp = rings_dp;
-        rs.rings.gap = std::max(0.2, 2.0 * rings_dp);
-        rs.scheme.cfl = cfl;
-        rs.options.artificial_stress = eps > 0;
-        rs.scheme.eps_artificial = eps;
-        rs.t_max = rings_time;
-        rs.run_after_contact = -1;
-        const auto r = scenes::run_rings(rs, {}, "rings cfl sweep");
+        const auto r = scenes::run_rings_stored(sweep_rings(eps, cfl), "rings cfl sweep");
         const bool blew = !r.blow_up.empty(), broke = r.max_fragments > 1;
         if (cfl == cfls.front()) rings_baseline_broke = broke;
         const bool failed = blew || (broke && !rings_baseline_broke);
@@ -69,14 +142,7 @@ int main(int argc, char** argv) {
         stable_rings = cfl;
       }
       for (const double cfl : cfls) {
-        scenes::SlabRunSpec ss;
-        ss.slab.dp = slab_dp;
-        ss.scheme.cfl = cfl;
-        ss.options.artificial_stress = eps > 0;
-        ss.scheme.eps_artificial = eps;
-        ss.t_max = slab_time;
-        ss.run_after_fracture = 0;
-        const auto r = scenes::run_slab(ss, {}, "slab cfl sweep");
+        const auto r = scenes::run_slab_stored(sweep_slab(eps, cfl), "slab cfl sweep");
         const bool blew = !r.blow_up.empty(), broke = r.fracture_time >= 0;
         if (cfl == cfls.front()) slab_baseline_broke = broke;
         const bool failed = blew || (broke && !slab_baseline_broke);
@@ -94,29 +160,19 @@ int main(int argc, char** argv) {
     // code, run with one thread and with two, parted at 676 and 522 at half the factor: the threads' sum order
     // alone). So the slab is run as an ensemble of seeds at each factor (SlabSpec::jitter: random displacements
     // of 1e-8 dp, far below any length of the problem) and the medians are compared.
-    if (slab_seeds < 1) throw std::invalid_argument("--slab-seeds must be >= 1");
     auto halved = d.csv("halved_dt.csv", {"scene", "cfl", "seed", "dt", "steps", "restitution", "max_fragments", "fracture_time", "message"});
     scenes::RingsRunResult rings_at[2];
     std::vector<double> parting[2];
     for (int k = 0; k < 2; ++k) {
-      const double f = k == 0 ? cfl : 0.5 * cfl;
-      scenes::RingsRunSpec rs;
-      rs.rings.dp = rings_dp;
-      rs.rings.gap = std::max(0.2, 2.0 * rings_dp);
-      rs.scheme.cfl = f;
-      rings_at[k] = scenes::run_rings(rs, {}, "rings at cfl " + std::to_string(f));
+      const double f = factors[k];
+      rings_at[k] = scenes::run_rings_stored(whole_rings(f), "rings at cfl " + std::to_string(f));
       const auto& r = rings_at[k];
       if (!r.blow_up.empty()) throw std::runtime_error("rings at cfl " + std::to_string(f) + ": " + r.blow_up);
       halved.row("rings", f, -1, r.dt, r.steps, r.restitution, r.max_fragments, r.fracture_time, r.blow_up);
       if (d.quick()) continue;
       for (int seed = 0; seed < slab_seeds; ++seed) {
-        scenes::SlabRunSpec ss;
-        ss.slab.dp = slab_dp;
-        ss.slab.jitter = slab_jitter;
-        ss.slab.seed = static_cast<unsigned>(seed);
-        ss.scheme.cfl = f;
-        const auto q = scenes::run_slab(ss, {}, "slab at cfl " + sph::format_number(f) + ", seed " + std::to_string(seed));
-        if (!q.blow_up.empty()) throw std::runtime_error("slab at cfl " + sph::format_number(f) + ", seed " + std::to_string(seed) + ": " + q.blow_up);
+        const auto q = scenes::run_slab_stored(ensemble_slab(f, seed), slab_label(f, seed));
+        if (!q.blow_up.empty()) throw std::runtime_error(slab_label(f, seed) + ": " + q.blow_up);
         halved.row("slab", f, seed, q.dt, q.steps, NAN, NAN, q.fracture_time, q.blow_up);
         parting[k].push_back(q.fracture_time);
       }
@@ -156,11 +212,7 @@ int main(int argc, char** argv) {
       }
     }
     // The fast collision.
-    scenes::RingsRunSpec fs;
-    fs.rings.dp = fast_dp;
-    fs.rings.gap = std::max(0.2, 2.0 * fast_dp);
-    fs.rings.speed = fast_speed;
-    const auto r = scenes::run_rings(fs, {}, "rings fast");
+    const auto r = scenes::run_rings_stored(fast_rings(), "rings fast");
     auto fast = d.csv("fast_collision.csv", {"dp", "speed", "steps", "wall_s", "blew_up", "max_fragments", "min_main_share", "max_stray",
                                              "contact_duration", "restitution", "message"});
     const double duration = r.contact_end >= 0 ? r.contact_end - r.contact_start : NAN;

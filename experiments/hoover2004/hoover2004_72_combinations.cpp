@@ -7,11 +7,17 @@
 // CHOSEN: dt = 0.1 (the sweep costs 72 revolutions: about 5 minutes on 2 idle cores, 8 on the shared
 // machine; the runs are spread over the OpenMP threads), <v>_M with arithmetic
 // rho_ij, plain continuity equation, closest distance 0.7, viscosity q = rho (2 dx)^2 (div v)^2 in compression.
+// Each combination is a run of its own, named by its label with '_' for '/' (--list-runs true prints them): a job
+// of its own in make figures (experiments/targets.mk H-72_RUNS, --step-runs; issue 17), which the collecting run
+// reads back from the store of runs (scenes/hexagon_store.hpp).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "frame/driver.hpp"
+#include "frame/run_jobs.hpp"
 #include "hoover2004/scenes/hexagon.hpp"
+#include "hoover2004/scenes/hexagon_store.hpp"
 
 using namespace sph;
 
@@ -20,6 +26,7 @@ int main(int argc, char** argv) {
   scenes::HexagonSetup s;
   s.dt = 0.1;
   scenes::hexagon_params(d, s);
+  const sph::RunJobs jobs(d);  // --step-runs, --list-runs
   return d.run(argc, argv, [&] {
     if (d.quick() && !d.given("shells")) s.shells = 3;
     if (d.quick() && !d.given("dt")) s.dt = 0.2;
@@ -36,6 +43,9 @@ int main(int argc, char** argv) {
               o.closest_approach = approach; o.viscosity = visc; o.density = dens; o.advection = adv; o.torque = torque;
               v.push_back({o.label(), o});
             }
+    std::vector<std::string> names;
+    for (const auto& x : v) names.push_back(scenes::value_name(x.name));
+    if (jobs.handled(names, [&](std::size_t i) { scenes::run_hexagon_stored(s, v[i]); })) return;
     const auto runs = scenes::run_and_record(d, s, v);
     struct Row { std::string variant; double L_ratio, shape, failed_at; long reflections; SpamOptions o; };
     std::vector<Row> rows;

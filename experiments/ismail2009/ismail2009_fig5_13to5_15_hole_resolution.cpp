@@ -58,7 +58,7 @@
 #include <vector>
 
 #include "frame/driver.hpp"
-#include "frame/run_store.hpp"
+#include "frame/run_jobs.hpp"
 #include "ismail2009/scenes/fem_hole.hpp"
 #include "ismail2009/scenes/hole.hpp"
 
@@ -112,11 +112,7 @@ int main(int argc, char** argv) {
   d.param("settle", p.settle, "settling time after the ramp in 1/omega (CHOSEN)").non_negative();
   d.param("damping", p.damping, "mass-proportional damping in units of omega (CHOSEN)").non_negative();
   d.param("variational", p.variational, "boundary scheme: variational (true) or ghost reflection (false)");
-  std::vector<std::string> only;
-  d.param("runs", only, "step only these runs of the study (names as printed by --list-runs) into the store of runs "
-                        "(SPH_RUN_CACHE), for the run that collects the study (Makefile run_rules); nothing else is written");
-  bool list_runs = false;
-  d.param("list-runs", list_runs, "print the names of the study's runs and exit");
+  const sph::RunJobs jobs(d);  // --step-runs, --list-runs
   return d.run(argc, argv, [&] {
     if (d.quick()) {
       if (!d.given("n")) ns = {11, 21};
@@ -171,20 +167,13 @@ int main(int argc, char** argv) {
         plan_run(edge_run_name("passes30", eigen_n), q);
       }
     }
-    if (list_runs) {
-      for (const auto& [name, _] : plan) std::printf("%s\n", name.c_str());
-      return;
-    }
     auto planned = [&](const std::string& name) {  // the plan's entry of `name`, or plan.end()
       return std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == name; });
     };
     std::map<std::string, scenes::HoleResult> result;
-    if (!only.empty()) {
-      std::vector<std::string> names;
-      for (const auto& [name, _] : plan) names.push_back(name);
-      sph::step_named_runs(only, names, [&](std::size_t i) { scenes::run_hole(plan[i].second); });
-      return;
-    }
+    std::vector<std::string> names;
+    for (const auto& [name, _] : plan) names.push_back(name);
+    if (jobs.handled(names, [&](std::size_t i) { scenes::run_hole(plan[i].second); })) return;
     for (const auto& [name, q] : plan) result.emplace(name, scenes::run_hole(q));
     // wall_s, build_s: of the run where it was stepped (a run job, or this process); a run served from the store
     // of runs reports the times the stepping run stored.

@@ -1,8 +1,11 @@
 #include "gray2001/scenes/plate_run_cache.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <sstream>
 
+#include "core/run_loop.hpp"
 #include "frame/run_store.hpp"
 #include "gray2001/scenes/scheme_key.hpp"
 
@@ -12,6 +15,8 @@ namespace {
 
 // A field added to PlateSpec must be added to the key below: the size makes the compiler say so.
 static_assert(sizeof(PlateSpec) == 64, "PlateSpec changed: update plate_run_key");
+static_assert(sizeof(PlateRunSpec) == 64 + 96 + 8 + 6 * 8 + 8, "PlateRunSpec changed: update plate_run_key and plate_whole_run_key");
+static_assert(sizeof(TipSample) == 64 && sizeof(PlateRunResult) == 104, "PlateRunResult changed: update run_plate_stored's payload");
 
 using sph::exact_text;
 
@@ -123,6 +128,59 @@ void store_plate_run(const PlateRunSpec& s, const StoredPlateRun& run, const std
     put(out, run.wall[k]);
   }
   sph::run_store_write(dir, "plate", key, out.str(), variant(run.power_budget));
+}
+
+std::string plate_whole_run_key(const PlateRunSpec& s) {
+  std::ostringstream k;
+  k << plate_run_key(s) << " t_end " << exact_text(s.t_end) << " max_steps " << s.max_steps << " after "
+    << exact_text(s.run_after_fracture) << " crossings " << s.stop_after_crossings << " power " << s.power_budget;
+  return k.str();
+}
+
+PlateRunResult run_plate_stored(const PlateRunSpec& s, const std::string& progress_label) {
+  const std::string dir = plate_run_cache_dir(), key = plate_whole_run_key(s);
+  if (const auto payload = sph::run_store_read(dir, "plate-whole", key)) {
+    std::istringstream in(*payload);
+    PlateRunResult r;
+    std::int64_t steps = 0;
+    std::uint64_t particles = 0, n = 0;
+    bool ok = get(in, steps) && get(in, particles) && get(in, r.dt) && get(in, r.wall_s) && get(in, r.fracture_time) &&
+              sph::store_get_text(in, r.blow_up) && get(in, n);
+    if (ok) {
+      r.trace.resize(n);
+      for (TipSample& t : r.trace) {
+        std::uint64_t fragments = 0;
+        ok = ok && get(in, t.t) && get(in, t.y) && get(in, t.ke) && get(in, t.ee) && get(in, fragments) && get(in, t.p_art) &&
+             get(in, t.p_visc) && get(in, t.p_xsph);
+        t.fragments = fragments;
+      }
+    }
+    if (ok) {  // else truncated: stepped again
+      r.steps = steps;
+      r.particles = particles;
+      r.reused = true;
+      sph::particle_steps_reused() += static_cast<long long>(r.particles) * r.steps;
+      std::fprintf(stderr, "%s: a stored run (%s), not stepped again\n", progress_label.c_str(), dir.c_str());
+      return r;
+    }
+  }
+  const PlateRunResult r = run_plate(s, {}, progress_label);
+  if (!dir.empty()) {
+    std::ostringstream out;
+    put(out, static_cast<std::int64_t>(r.steps));
+    put(out, static_cast<std::uint64_t>(r.particles));
+    put(out, r.dt);
+    put(out, r.wall_s);
+    put(out, r.fracture_time);
+    sph::store_put_text(out, r.blow_up);
+    put(out, static_cast<std::uint64_t>(r.trace.size()));
+    for (const TipSample& t : r.trace) {
+      put(out, t.t); put(out, t.y); put(out, t.ke); put(out, t.ee); put(out, static_cast<std::uint64_t>(t.fragments));
+      put(out, t.p_art); put(out, t.p_visc); put(out, t.p_xsph);
+    }
+    sph::run_store_write(dir, "plate-whole", key, out.str());
+  }
+  return r;
 }
 
 }  // namespace scenes

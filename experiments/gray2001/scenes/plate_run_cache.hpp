@@ -45,4 +45,13 @@ std::optional<PlateRunResult> serve_plate_run(const PlateRunSpec& s, const std::
 /// the runs stored by other code versions.
 void store_plate_run(const PlateRunSpec& s, const StoredPlateRun& run, const std::string& dir);
 
+/// The key of a whole run: plate_run_key and every field that decides where the run stops.
+std::string plate_whole_run_key(const PlateRunSpec& s);
+
+/// A run served whole when the store holds one of the same whole-run key, else stepped and stored whole (when
+/// the store is on): for the points of a sweep, which stop at a fracture, a blow-up or t_end (the prefix store
+/// above serves only runs that stop at zero crossings), stepped by run jobs and read back by the collecting
+/// driver (G-stab). A served run's wall_s is the stepping run's.
+PlateRunResult run_plate_stored(const PlateRunSpec& s, const std::string& progress_label);
+
 }  // namespace scenes

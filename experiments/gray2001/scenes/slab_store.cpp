@@ -1,8 +1,10 @@
 #include "gray2001/scenes/slab_store.hpp"
 
 #include <cstdint>
+#include <cstdio>
 #include <sstream>
 
+#include "core/run_loop.hpp"
 #include "frame/run_store.hpp"
 #include "gray2001/scenes/scheme_key.hpp"
 
@@ -17,17 +19,8 @@ static_assert(sizeof(SlabRunResult) == 168, "SlabRunResult changed: update the s
 namespace {
 using sph::store_get;
 using sph::store_put;
-
-void put_text(std::ostream& o, const std::string& s) {
-  store_put(o, static_cast<std::uint64_t>(s.size()));
-  o.write(s.data(), static_cast<std::streamsize>(s.size()));
-}
-bool get_text(std::istream& i, std::string& s) {
-  std::uint64_t n = 0;
-  if (!store_get(i, n) || n > (std::uint64_t{1} << 34)) return false;
-  s.resize(n);
-  return static_cast<bool>(i.read(s.data(), static_cast<std::streamsize>(n)));
-}
+using sph::store_get_text;
+using sph::store_put_text;
 }  // namespace
 
 std::string slab_run_key(const SlabRunSpec& s, const std::string& files_tag) {
@@ -56,7 +49,7 @@ std::optional<StoredSlabRun> serve_slab_run(const SlabRunSpec& s, const std::str
       !store_get(in, r.first_split_time) || !store_get(in, r.fracture_time) || !store_get(in, r.crack_x) ||
       !store_get(in, r.crack_from_junction) || !store_get(in, r.neck_before_fracture) || !store_get(in, r.onset_strain) ||
       !store_get(in, r.onset_time) || !store_get(in, r.clumping_time) || !store_get(in, r.opening_time) ||
-      !store_get(in, r.opening_from_junction) || !get_text(in, r.blow_up) || !store_get(in, samples))
+      !store_get(in, r.opening_from_junction) || !store_get_text(in, r.blow_up) || !store_get(in, samples))
     return std::nullopt;
   r.steps = steps;
   r.particles = particles;
@@ -75,7 +68,7 @@ std::optional<StoredSlabRun> serve_slab_run(const SlabRunSpec& s, const std::str
   if (!store_get(in, files)) return std::nullopt;
   stored.files.resize(files);
   for (auto& [name, bytes] : stored.files)
-    if (!get_text(in, name) || !get_text(in, bytes)) return std::nullopt;
+    if (!store_get_text(in, name) || !store_get_text(in, bytes)) return std::nullopt;
   return stored;
 }
 
@@ -88,7 +81,7 @@ void store_slab_run(const SlabRunSpec& s, const std::string& files_tag, const St
   store_put(out, r.dt); store_put(out, r.wall_s); store_put(out, r.first_split_time); store_put(out, r.fracture_time);
   store_put(out, r.crack_x); store_put(out, r.crack_from_junction); store_put(out, r.neck_before_fracture);
   store_put(out, r.onset_strain); store_put(out, r.onset_time); store_put(out, r.clumping_time);
-  store_put(out, r.opening_time); store_put(out, r.opening_from_junction); put_text(out, r.blow_up);
+  store_put(out, r.opening_time); store_put(out, r.opening_from_junction); store_put_text(out, r.blow_up);
   store_put(out, static_cast<std::uint64_t>(r.trace.size()));
   for (const auto& m : r.trace) {
     store_put(out, m.t); store_put(out, m.extension); store_put(out, m.strain); store_put(out, m.ke); store_put(out, m.ee);
@@ -98,10 +91,22 @@ void store_slab_run(const SlabRunSpec& s, const std::string& files_tag, const St
   }
   store_put(out, static_cast<std::uint64_t>(stored.files.size()));
   for (const auto& [name, bytes] : stored.files) {
-    put_text(out, name);
-    put_text(out, bytes);
+    store_put_text(out, name);
+    store_put_text(out, bytes);
   }
   sph::run_store_write(dir, "slab", slab_run_key(s, files_tag), out.str());
+}
+
+SlabRunResult run_slab_stored(const SlabRunSpec& s, const std::string& progress_label) {
+  if (auto stored = serve_slab_run(s, "none")) {
+    sph::particle_steps_reused() += static_cast<long long>(stored->result.particles) * stored->result.steps;
+    std::fprintf(stderr, "%s: a stored run (%s), not stepped again\n", progress_label.c_str(), sph::run_store_dir().c_str());
+    return stored->result;
+  }
+  StoredSlabRun done;
+  done.result = run_slab(s, {}, progress_label);
+  store_slab_run(s, "none", done);
+  return done.result;
 }
 
 }  // namespace scenes

@@ -29,4 +29,9 @@ std::optional<StoredSlabRun> serve_slab_run(const SlabRunSpec& s, const std::str
 /// Stores the run of (s, files_tag) (when the store is on).
 void store_slab_run(const SlabRunSpec& s, const std::string& files_tag, const StoredSlabRun& run);
 
+/// A run without an observer (files_tag "none"), served when the store holds it, else stepped and stored: a point
+/// of a sweep that a run job steps and the collecting driver reads back (G-stab-rs). A served run's wall_s is the
+/// stepping run's.
+SlabRunResult run_slab_stored(const SlabRunSpec& s, const std::string& progress_label);
+
 }  // namespace scenes

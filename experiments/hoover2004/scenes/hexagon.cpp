@@ -1,4 +1,5 @@
 #include "hoover2004/scenes/hexagon.hpp"
+#include "hoover2004/scenes/hexagon_store.hpp"
 
 #include <cmath>
 #include <limits>
@@ -252,8 +253,7 @@ std::vector<HexagonRun> run_and_record(Driver& d, const HexagonSetup& s, const s
 #pragma omp parallel for schedule(dynamic, 1)
   for (long k = 0; k < static_cast<long>(variants.size()); ++k) {
     try {
-      const auto& v = variants[k];
-      runs[k] = v.name == "md" ? run_hexagon_md(s) : run_hexagon_spam(s, v.options, v.name);
+      runs[k] = run_hexagon_stored(s, variants[k]);
     } catch (const std::exception& e) {
 #pragma omp critical
       error = e.what();
