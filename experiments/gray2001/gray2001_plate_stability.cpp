@@ -63,18 +63,18 @@ int main(int argc, char** argv) {
       return s;
     };
     // (1) Time-step sweeps at dp and at the papers' spacing (values suffixed _dp<spacing>); their points.
-    struct Point { double spacing, eps, cfl; std::string name; };
+    struct Point { int sweep; double spacing, eps, cfl; std::string name; };  // sweep 0: at dp, 1: at the papers' spacing
     std::vector<Point> points;
-    auto add_sweep = [&](double spacing, const std::vector<double>& factors) {
+    auto add_sweep = [&](int sweep, double spacing, const std::vector<double>& factors) {
       for (const double eps : {0.0, 0.3})
         for (const double cfl : factors) {
           std::ostringstream name;
           name << "sweep_dp" << sph::format_number(spacing) << "_eps" << eps << "_cfl" << cfl;
-          points.push_back({spacing, eps, cfl, name.str()});
+          points.push_back({sweep, spacing, eps, cfl, name.str()});
         }
     };
-    add_sweep(dp, cfls);
-    if (paper_dp > 0) add_sweep(paper_dp, paper_cfls);
+    add_sweep(0, dp, cfls);
+    if (paper_dp > 0) add_sweep(1, paper_dp, paper_cfls);
     auto point_spec = [&](const Point& q) {
       auto s = base();
       s.plate.dp = q.spacing;
@@ -111,14 +111,14 @@ int main(int argc, char** argv) {
         }))
       return;
     auto sweep = d.csv("cfl_sweep.csv", {"dp", "eps", "cfl", "dt", "steps", "t_reached", "blew_up", "fractured", "message"});
-    auto sweep_at = [&](double spacing, const std::string& suffix) {
+    auto sweep_at = [&](int which, const std::string& suffix) {
       for (const double eps : {0.0, 0.3}) {
         double largest_stable = 0;
         for (const Point& q : points) {
-          if (q.spacing != spacing || q.eps != eps) continue;
+          if (q.sweep != which || q.eps != eps) continue;
           const auto r = run_point(q);
           const bool blew = !r.blow_up.empty(), broke = r.fracture_time >= 0;
-          sweep.row(spacing, eps, q.cfl, r.dt, r.steps, r.trace.back().t, blew ? 1 : 0, broke ? 1 : 0, r.blow_up);
+          sweep.row(q.spacing, eps, q.cfl, r.dt, r.steps, r.trace.back().t, blew ? 1 : 0, broke ? 1 : 0, r.blow_up);
           if (!blew && !broke && q.cfl > largest_stable) largest_stable = q.cfl;
           if (blew || broke) break;  // larger factors only fail sooner
         }
@@ -127,8 +127,8 @@ int main(int argc, char** argv) {
         d.value("stability_margin_" + e, largest_stable / scheme.cfl, "largest stable factor / the factor of the runs (--cfl)");
       }
     };
-    sweep_at(dp, "");
-    if (paper_dp > 0) sweep_at(paper_dp, "_dp" + sph::format_number(paper_dp));
+    sweep_at(0, "");
+    if (paper_dp > 0) sweep_at(1, "_dp" + sph::format_number(paper_dp));
     auto runs = d.csv("runs.csv", {"run", "periods", "steps", "wall_s", "T_first", "T_last", "fragments", "energy_first", "energy_last"});
     auto one = [&](const std::string& name) {
       const Whole& w = *std::find_if(wholes.begin(), wholes.end(), [&](const Whole& x) { return x.name == name; });

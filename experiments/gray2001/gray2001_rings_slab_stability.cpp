@@ -20,9 +20,9 @@
 // t ~ 190 at any stable step (the tensile instability, G-fig8), which is physics of the scheme, not of the
 // step. The sweep stops at the first failure. Other parameters as the scene drivers.
 #include <algorithm>
-#include <functional>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <sstream>
 
 #include "frame/driver.hpp"
