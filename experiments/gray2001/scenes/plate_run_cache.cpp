@@ -138,49 +138,16 @@ std::string plate_whole_run_key(const PlateRunSpec& s) {
 }
 
 PlateRunResult run_plate_stored(const PlateRunSpec& s, const std::string& progress_label) {
-  const std::string dir = plate_run_cache_dir(), key = plate_whole_run_key(s);
-  if (const auto payload = sph::run_store_read(dir, "plate-whole", key)) {
-    std::istringstream in(*payload);
-    PlateRunResult r;
-    std::int64_t steps = 0;
-    std::uint64_t particles = 0, n = 0;
-    bool ok = get(in, steps) && get(in, particles) && get(in, r.dt) && get(in, r.wall_s) && get(in, r.fracture_time) &&
-              sph::store_get_text(in, r.blow_up) && get(in, n);
-    if (ok) {
-      r.trace.resize(n);
-      for (TipSample& t : r.trace) {
-        std::uint64_t fragments = 0;
-        ok = ok && get(in, t.t) && get(in, t.y) && get(in, t.ke) && get(in, t.ee) && get(in, fragments) && get(in, t.p_art) &&
-             get(in, t.p_visc) && get(in, t.p_xsph);
-        t.fragments = fragments;
-      }
-    }
-    if (ok) {  // else truncated: stepped again
-      r.steps = steps;
-      r.particles = particles;
-      r.reused = true;
-      sph::particle_steps_reused() += static_cast<long long>(r.particles) * r.steps;
-      std::fprintf(stderr, "%s: a stored run (%s), not stepped again\n", progress_label.c_str(), dir.c_str());
-      return r;
-    }
-  }
-  const PlateRunResult r = run_plate(s, {}, progress_label);
-  if (!dir.empty()) {
-    std::ostringstream out;
-    put(out, static_cast<std::int64_t>(r.steps));
-    put(out, static_cast<std::uint64_t>(r.particles));
-    put(out, r.dt);
-    put(out, r.wall_s);
-    put(out, r.fracture_time);
-    sph::store_put_text(out, r.blow_up);
-    put(out, static_cast<std::uint64_t>(r.trace.size()));
-    for (const TipSample& t : r.trace) {
-      put(out, t.t); put(out, t.y); put(out, t.ke); put(out, t.ee); put(out, static_cast<std::uint64_t>(t.fragments));
-      put(out, t.p_art); put(out, t.p_visc); put(out, t.p_xsph);
-    }
-    sph::run_store_write(dir, "plate-whole", key, out.str());
-  }
-  return r;
+  // Every field of the result (frame/run_store.hpp's visitors); the samples as their bytes.
+  auto fields = [](auto& r, auto&& f) {
+    return f(r.steps) && f(r.particles) && f(r.dt) && f(r.wall_s) && f(r.fracture_time) && f(r.blow_up) && f(r.trace);
+  };
+  return sph::served_or_stepped<PlateRunResult>(
+      "plate-whole", plate_whole_run_key(s), progress_label, fields, [&] { return run_plate(s, {}, progress_label); },
+      [](PlateRunResult& q) {
+        q.reused = true;
+        return static_cast<long long>(q.particles) * q.steps;
+      });
 }
 
 }  // namespace scenes

@@ -1,10 +1,7 @@
 #include "hoover2004/scenes/hexagon_store.hpp"
 
-#include <cstdint>
-#include <cstdio>
 #include <sstream>
 
-#include "core/run_loop.hpp"
 #include "frame/run_store.hpp"
 
 namespace sph::scenes {
@@ -18,42 +15,12 @@ static_assert(sizeof(HexagonRun) == 384, "HexagonRun changed: update the hexagon
 
 namespace {
 
-// Every field of a run but the variant's name (the key's), in one order for writing and reading: f(scalar),
-// f(vector of doubles), f(vector of vectors).
-template <class Run, class F>
-bool each_field(Run& r, F&& f) {
+// Every field of a run but the variant's name (the key's), in one order for writing and reading
+// (frame/run_store.hpp's visitors).
+auto fields = [](auto& r, auto&& f) {
   return f(r.t) && f(r.L) && f(r.K) && f(r.U) && f(r.shape_rms) && f(r.angle) && f(r.gauss_D) && f(r.gauss_beta) &&
          f(r.snapshot_angles) && f(r.snapshots) && f(r.snapshot_density) && f(r.advection_torque_integral) && f(r.L0) &&
          f(r.E0) && f(r.failed) && f(r.failed_at) && f(r.steps) && f(r.wall_s) && f(r.gauss_floor_hits) && f(r.reflections);
-}
-
-struct Writer {
-  std::ostream& o;
-  template <class T>
-  bool operator()(const T& v) { store_put(o, v); return true; }
-  template <class T>
-  bool operator()(const std::vector<T>& v) {
-    store_put(o, static_cast<std::uint64_t>(v.size()));
-    for (const auto& x : v) (*this)(x);
-    return true;
-  }
-  bool operator()(const Vec2& v) { store_put(o, v.x()); store_put(o, v.y()); return true; }
-};
-
-struct Reader {
-  std::istream& i;
-  template <class T>
-  bool operator()(T& v) { return store_get(i, v); }
-  template <class T>
-  bool operator()(std::vector<T>& v) {
-    std::uint64_t n = 0;
-    if (!store_get(i, n) || n > (std::uint64_t{1} << 32)) return false;  // a corrupt length: absent
-    v.resize(n);
-    for (auto& x : v)
-      if (!(*this)(x)) return false;
-    return true;
-  }
-  bool operator()(Vec2& v) { return store_get(i, v.x()) && store_get(i, v.y()); }
 };
 
 }  // namespace
@@ -77,24 +44,13 @@ std::string hexagon_run_key(const HexagonSetup& s, const HexagonVariant& v) {
 }
 
 HexagonRun run_hexagon_stored(const HexagonSetup& s, const HexagonVariant& v) {
-  const std::string dir = run_store_dir(), key = hexagon_run_key(s, v);
-  if (const auto payload = run_store_read(dir, "hexagon", key)) {
-    std::istringstream in(*payload);
-    HexagonRun r;
-    if (each_field(r, Reader{in})) {  // else truncated: stepped again
-      r.variant = v.name;
-      particle_steps_reused() += static_cast<long long>(s.lattice().size()) * r.steps;
-      std::fprintf(stderr, "hexagon %s: a stored run (%s), not stepped again\n", v.name.c_str(), dir.c_str());
-      return r;
-    }
-  }
-  HexagonRun r = v.name == "md" ? run_hexagon_md(s) : run_hexagon_spam(s, v.options, v.name);
-  if (!dir.empty()) {
-    std::ostringstream out;
-    each_field(r, Writer{out});
-    run_store_write(dir, "hexagon", key, out.str());
-  }
-  return r;
+  return served_or_stepped<HexagonRun>(
+      "hexagon", hexagon_run_key(s, v), "hexagon " + v.name, fields,
+      [&] { return v.name == "md" ? run_hexagon_md(s) : run_hexagon_spam(s, v.options, v.name); },
+      [&](HexagonRun& r) {
+        r.variant = v.name;
+        return static_cast<long long>(s.lattice().size()) * r.steps;
+      });
 }
 
 }  // namespace sph::scenes
