@@ -149,9 +149,10 @@ int main(int argc, char** argv) {
     }
     auto step = [&](const Planned& run) {  // stepped here (or served), with the main runs' snapshots and frames
       const auto s = spec(run.eps, run.dp);
+      if (!run.main) return scenes::run_slab_stored(s, "slab eps0.3 " + dp_tag(run.dp));  // no files of its own
       const std::string tag = run.eps > 0 ? "eps0.3" : "eps0";
       const double every = run.eps > 0 ? frame_every : frame_every_eps0;
-      const std::string files_tag = run.main ? "snapshots and frames every " + sph::format_number(every) : "none";
+      const std::string files_tag = "snapshots and frames every " + sph::format_number(every);
       const std::vector<std::string> names{"snapshots_" + tag + ".h5", "snapshots_" + tag + ".xdmf", "frames_" + tag + ".csv"};
       if (auto stored = scenes::serve_slab_run(s, files_tag)) {
         for (const auto& [name, bytes] : stored->files) std::ofstream(d.out_dir() / name, std::ios::binary) << bytes;
@@ -160,28 +161,24 @@ int main(int argc, char** argv) {
         return stored->result;  // its wall_s is the stepping run's
       }
       scenes::StoredSlabRun done;
-      if (!run.main) {
-        done.result = scenes::run_slab(s, {}, "slab eps0.3 " + dp_tag(run.dp));
-      } else {
-        {
-          sph::SnapshotSeries snaps(d.out_dir() / names[0], d.info());
-          auto frames = d.csv(names[2], scenes::frame_columns());
-          double next_frame = 0;
-          bool parted_shown = false;
-          auto on_sample = [&](const sph::GraySolver& solver, const sph::ElasticBody& body, const scenes::SlabSample& smp) {
-            const bool first_parted = smp.parted && !parted_shown;  // a frame at the fracture as well
-            if (!first_parted && solver.time() + 1e-9 < next_frame) return;
-            parted_shown = parted_shown || smp.parted;
-            if (!first_parted) next_frame += every;
-            snaps.write(sph::snapshot_of(solver));
-            scenes::write_frame(frames, solver, body);
-          };
-          done.result = scenes::run_slab(s, on_sample, "slab " + tag);
-        }  // the files closed: stored as written
-        for (const auto& name : names) {
-          std::ifstream in(d.out_dir() / name, std::ios::binary);
-          done.files.emplace_back(name, std::string(std::istreambuf_iterator<char>(in), {}));
-        }
+      {
+        sph::SnapshotSeries snaps(d.out_dir() / names[0], d.info());
+        auto frames = d.csv(names[2], scenes::frame_columns());
+        double next_frame = 0;
+        bool parted_shown = false;
+        auto on_sample = [&](const sph::GraySolver& solver, const sph::ElasticBody& body, const scenes::SlabSample& smp) {
+          const bool first_parted = smp.parted && !parted_shown;  // a frame at the fracture as well
+          if (!first_parted && solver.time() + 1e-9 < next_frame) return;
+          parted_shown = parted_shown || smp.parted;
+          if (!first_parted) next_frame += every;
+          snaps.write(sph::snapshot_of(solver));
+          scenes::write_frame(frames, solver, body);
+        };
+        done.result = scenes::run_slab(s, on_sample, "slab " + tag);
+      }  // the files closed: stored as written
+      for (const auto& name : names) {
+        std::ifstream in(d.out_dir() / name, std::ios::binary);
+        done.files.emplace_back(name, std::string(std::istreambuf_iterator<char>(in), {}));
       }
       scenes::store_slab_run(s, files_tag, done);
       return done.result;
