@@ -113,5 +113,5 @@ I-hole_DRIVERS := ismail2009_fig5_13to5_15_hole ismail2009_fig5_13to5_15_hole_re
 # run_names_declared compares): the finest (201: 200 s and 100 s) bound the target's wall time on a cluster.
 I-hole_RUN_DRIVER := ismail2009_fig5_13to5_15_hole_resolution
 I-hole_RUN_ARGS := --step-runs
-I-hole_RUNS := controlled_n21 controlled_n41 controlled_n81 controlled_n161 controlled_n201 plain_n21 plain_n41 plain_n81 plain_n161 plain_n201 gamma_g0 gamma_g0.002 gamma_g0.005 gamma_g0.01 gamma_g0.02 gamma_g0.05 linear_n161 edge_resolution_n41 edge_resolution_n81 edge_resolution_n161 edge_dt0.1_n81 edge_passes3_n81 edge_nu0.3_n81 edge_variational_n81 edge_passes30_n21
+I-hole_RUNS := controlled_n21 controlled_n41 controlled_n81 controlled_n161 controlled_n201 plain_n21 plain_n41 plain_n81 plain_n161 plain_n201 gamma_g0 gamma_g0.002 gamma_g0.005 gamma_g0.01 gamma_g0.02 gamma_g0.05 linear_n161 edge_resolution_n41 edge_resolution_n81 edge_resolution_n161 edge_resolution_n201 edge_dt0.1_n81 edge_passes3_n81 edge_nu0.3_n81 edge_variational_n81 edge_passes30_n21
 BENCH_DRIVERS += bench_tl_bar bench_tl_hole

@@ -68,8 +68,8 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   const double cL = sph::longitudinal_wave_speed(m, p.rho), cT = sph::transverse_wave_speed(m, p.rho);
   const double t_ramp = p.ramp_transits * p.a / cT;
   // The slowest mode of the quarter sheet is shear-dominated (nu = 0.49): omega ~ pi c_T / (4 a). Mass-
-  // proportional damping (HoleParams::damping, 4 omega) brings it to rest in a few periods and holds down the
-  // reflection closure's weak edge instability (CHOSEN; the thesis's sheet 'comes to rest' without saying how).
+  // proportional damping (HoleParams::damping, 6.5 omega) brings it to rest and holds the reflection closure's
+  // edge instability (CHOSEN; the thesis's sheet 'comes to rest' without saying how).
   const double omega = M_PI * cT / (4.0 * p.a), t_end = t_ramp + p.settle / omega;
   auto load = [=](const Vec2&, double t) {
     const double s = std::min(t / t_ramp, 1.0);
