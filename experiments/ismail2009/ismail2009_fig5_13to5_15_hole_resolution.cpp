@@ -13,20 +13,20 @@
 // the speeds quoted here are of free particles.) Kelvin-Voigt viscosity does not touch it
 // (the gradient does not see the sawtooth), a zero-energy-mode control (TlConfig2D::hourglass, after
 // Ganzenmueller 2015) only moves it (gamma = 0.01, 0.02 at 201: to the top edge), an even point reflection at
-// the corners and a traction solve on the mirror point's gradient make it worse (non-finite). CHOSEN (issue
-// 15 b): damping 6.5 omega (HoleParams::damping), the least that holds the mode at the finest resolution
-// (twice its undamped rate at 201, 2.97 omega: 5.93; 'damping_over_least_finest', checked) with 10% (the c/2
-// rule holds to 4-9% at 41-81 per side, tests/test_hole_edge.cpp; the rate is measured unloaded), checked in the
-// runs themselves ('speed_rise_finest': the largest speed falls to the end, 1.37 at the earlier 4 omega),
-// and settle = 10/omega, which takes the overdamped slowest mode down as far as 6/omega did at the earlier
-// 4 omega (decay omega (c - sqrt(c^2 - 1)), c = damping / 2: 0.158 against 0.268 omega); at rest the damping exerts no force, so it changes the time to rest, not the answer (n = 81:
-// the hole stress at 6.5 omega and 10/omega is 2e-5 below the run at 4 omega and 12/omega). The control at
-// gamma = 0.005. Without the control the sheet does not come to rest at 201: while its hole stress settles, a
-// particle on the symmetry line just above the hole keeps drifting ('plain_rest_speed_ratio_finest'); with it
-// the largest speed falls 1e4-fold (checked). The control's bias grows with gamma and shrinks with h (the gamma
-// sweep at 81; against the plain scheme at 201: 'control_bias_at_plain_finest', checked). 'speed_rise' (end
-// over the minimum after the ramp) and 'growth_rate' (d ln of the largest speed / dt over the last 3/omega) are
-// written too.
+// the corners and a traction solve on the mirror point's gradient make it worse (non-finite). CHOSEN (issue 15 b):
+// damping 6.5 omega (HoleParams::damping), the least that holds the mode at the finest resolution (twice its
+// undamped rate at 201, 2.97 omega: 5.93; 'damping_over_least_finest', checked) with 10% (the c/2 rule holds to
+// 4-9% at 41-81 per side, tests/test_hole_edge.cpp; the rate is measured unloaded), checked in the runs themselves
+// ('speed_rise_finest': the largest speed falls to the end, 1.37 at the earlier 4 omega), and settle = 10/omega,
+// which takes the overdamped slowest mode down as far as 6/omega did at the earlier 4 omega (decay omega (c -
+// sqrt(c^2 - 1)), c = damping / 2: 0.158 against 0.268 omega); at rest the damping exerts no force, so it changes
+// the time to rest, not the answer (n = 81: the hole stress at 6.5 omega and 10/omega is 2e-5 below the run at 4
+// omega and 12/omega). The control at gamma = 0.005. Without the control the sheet does not come to rest at 201:
+// while its hole stress settles, a particle on the symmetry line just above the hole keeps drifting
+// ('plain_rest_speed_ratio_finest'); with it the largest speed falls 1e4-fold (checked). The control's bias grows
+// with gamma and shrinks with h (the gamma sweep at 81; against the plain scheme at 201:
+// 'control_bias_at_plain_finest', checked). 'speed_rise' (end over the minimum after the ramp) and 'growth_rate' (d
+// ln of the largest speed / dt over the last 3/omega) are written too.
 //
 // Runs, all written to resolution.csv with their series:
 //   controlled  n = 21, 41, 81, 161, 201 at gamma = 0.005 (the study);
