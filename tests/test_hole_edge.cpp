@@ -10,6 +10,7 @@
 // the hole, which mass-proportional damping cannot hold (the zero-energy-mode control does), so "held" is
 // tested in the production runs instead (I-hole's speed_rise_finest).
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include "ismail2009/scenes/hole.hpp"
 
@@ -27,6 +28,9 @@ scenes::HoleParams linear_edge(double damping) {
 }
 
 TEST(HoleEdgeMode, MassProportionalDampingTakesHalfOfItOffTheCornerModesRate) {
+  // One thread: the sheet of 41 x 41 gains nothing from two (2.5 s either way, twice the CPU), and ctest runs the
+  // tests side by side, where a second thread per test only oversubscribes the cores (31 s in CI's ctest with two).
+  omp_set_num_threads(1);
   const auto free = scenes::run_hole(linear_edge(0.0));
   ASSERT_TRUE(free.finite);
   ASSERT_GT(free.growth_rate, 1.0);  // the mode is there to be damped (1.48 omega at 41 per side)
