@@ -19,10 +19,7 @@ namespace {
 scenes::HoleParams linear_edge(double damping) {
   scenes::HoleParams q;
   q.n = 41;
-  q.hooke = true;
-  q.traction = 0.01 * q.traction;
-  q.hourglass = 0;
-  q.settle = 12;
+  q = scenes::linear_edge_run(q);
   q.damping = damping;
   return q;
 }

@@ -131,14 +131,7 @@ int main(int argc, char** argv) {
     }
     // The study's runs, named (the unit of a job: Makefile run_rules, experiments/targets.mk I-hole_RUNS). Every
     // run is stepped (or served by the store) here, before the outputs, which are then written in the study's order.
-    const auto linear_edge = [&](scenes::HoleParams q) {  // issue 15 (b): Hooke at 1%, undamped, no control, 12/omega
-      q.hooke = true;
-      q.traction = 0.01 * p.traction;
-      q.damping = 0;
-      q.hourglass = 0;
-      q.settle = 12;
-      return q;
-    };
+    const auto linear_edge = scenes::linear_edge_run;  // issue 15 (b): Hooke at 1%, undamped, no control, 12/omega
     const bool edges = !edge_ns.empty() && edge_ns.front() != 0;
     scenes::HoleParams e = p;  // the edge series' base: the study's sheet, then linear_edge
     std::vector<std::pair<std::string, scenes::HoleParams>> plan;

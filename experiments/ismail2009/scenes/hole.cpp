@@ -160,6 +160,15 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   return r;
 }
 
+HoleParams linear_edge_run(HoleParams p) {
+  p.hooke = true;
+  p.traction = 0.01 * p.traction;
+  p.damping = 0;
+  p.hourglass = 0;
+  p.settle = 12;
+  return p;
+}
+
 EdgeSpectrum edge_spectrum(const HoleParams& p) {
   const auto start = std::chrono::steady_clock::now();
   const double ps = p.a / (p.n - 1);

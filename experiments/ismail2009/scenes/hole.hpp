@@ -63,6 +63,10 @@ struct HoleResult {
   std::vector<Sample> history;
 };
 
+/// The sheet of p as the edge-instability runs take it (issue 15 b): Hooke at 1% of p's load, undamped, without the
+/// zero-energy-mode control, run to 12/omega after the ramp, so that the growth rate is the closure's mode's own.
+HoleParams linear_edge_run(HoleParams p);
+
 /// Runs the sheet; calls snapshot(body, t) at the given times (and at the end).
 HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fractions = {},
                     const std::function<void(const sph::TlSolver2D&, double)>& snapshot = nullptr);
