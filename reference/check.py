@@ -14,7 +14,9 @@ expect:   match        out of tolerance is a FAIL
                        not, and FAILs unless both checks of its analysis hold:
                        1. its own value is bounded: the reproduced value lies in own_band ('lo..hi', each end a
                           number or a reproduced quantity of the same target with an optional factor,
-                          '1.191*T_theory_H2_mu0.6': a relation the analysis predicts, tested in the same run), or,
+                          '1.191*T_theory_H2_mu0.6': a relation the analysis predicts, tested in the same run; an
+                          empty end, 'lo..', is open: the analysis predicts one side only, and the value must
+                          still be finite), or,
                           where own_band is empty, within the tolerance of analysis_value (the number the analysis
                           predicts; abs for le/ge rows);
                        2. by its kind (column kind):
@@ -127,15 +129,22 @@ def data_lines(path):
         return [i for i, line in enumerate(f, 1) if line.strip() and not line.lstrip().startswith("#")]
 
 
-def parse_bound(text):
+def parse_bound(text, open_end):
     """One end of an own_band: a number, or a reproduced quantity of the same target with an optional factor
-    ('1.191*T_theory_H2_mu0.6'): (factor, quantity or None, number). Raises ValueError if malformed."""
+    ('1.191*T_theory_H2_mu0.6'): (factor, quantity or None, number); empty: open, (1, None, open_end).
+    Raises ValueError if malformed."""
+    if not text.strip():
+        return 1.0, None, open_end
     factor, star, name = text.strip().partition("*")
     if not star:
         try:
-            return 1.0, None, float(factor)
+            number = float(factor)
         except ValueError:
-            factor, name = "1", factor
+            number, factor, name = None, "1", factor
+        if number is not None:
+            if not math.isfinite(number):  # 'inf' or 'nan' would read as a bound; an open end is written empty
+                raise ValueError(f"own_band end '{text}' is not finite (leave the end empty for an open band)")
+            return 1.0, None, number
     name = name.strip()
     if not name or any(c in name for c in " ,*"):
         raise ValueError(f"own_band end '{text}' is neither a number nor [factor*]quantity")
@@ -143,13 +152,16 @@ def parse_bound(text):
 
 
 def parse_band(text):
-    """'lo..hi' -> (lo, hi), each end as parse_bound gives it; None if empty. Raises ValueError if malformed."""
+    """'lo..hi' -> (lo, hi), each end as parse_bound gives it (an empty end open: -inf or +inf); None if empty.
+    Raises ValueError if malformed."""
     if not text:
         return None
     lo, sep, hi = text.partition("..")
     if not sep:
         raise ValueError(f"own_band '{text}' is not 'lo..hi'")
-    band = parse_bound(lo), parse_bound(hi)
+    if not lo.strip() and not hi.strip():
+        raise ValueError(f"own_band '{text}' bounds nothing: at least one end must be given")
+    band = parse_bound(lo, -math.inf), parse_bound(hi, math.inf)
     if band[0][1] is None and band[1][1] is None and band[0][2] > band[1][2]:
         raise ValueError(f"own_band '{text}' is not 'lo..hi' with lo <= hi")
     return band
@@ -336,9 +348,12 @@ def own_value_bounded(row, reproduced, compare, tol, values):
         lo, hi = (band_end(b, row["target"], values) for b in band)
         if lo is None or hi is None:
             return False, f"{row['own_band']} (a quantity of the band was not computed)"
-        ok = lo <= reproduced <= hi and math.isfinite(lo) and math.isfinite(hi)
+        # A named end must have been computed finite; a number end is finite or deliberately open (empty).
+        finite_ends = all(math.isfinite(v) for v, b in zip((lo, hi), band) if b[1])
+        ok = lo <= reproduced <= hi and finite_ends and math.isfinite(reproduced)
         named = any(b[1] for b in band)
-        return ok, f"[{lo:.6g}, {hi:.6g}]" + (f" = {row['own_band']}" if named else "")
+        text = f"[{lo:.6g}, {hi:.6g}]".replace("-inf", "open").replace("inf", "open")
+        return ok, text + (f" = {row['own_band']}" if named else "")
     a = float(row["analysis_value"])
     mode = {"le": "abs", "ge": "abs", "abs_le": "abs"}.get(compare, compare)
     return within(mode, reproduced, a, tol if tol else 1e-9), f"{a:g} ({describe_tolerance(mode, tol)})"

@@ -183,6 +183,17 @@ class DiscrepancyContract(unittest.TestCase):
         self.assertIn("not computed", out["note"])
         self.assertTrue(any("neither a number" in p for p in check.row_problems(discrepancy_row(own_band="a b..2"))))
 
+    def test_an_open_end_bounds_one_side_and_still_needs_a_finite_value(self):
+        row = discrepancy_row(own_band="11..")
+        self.assertEqual(check_one(row, {("T", "q"): 1e6})["status"], "DISCREPANCY")
+        self.assertEqual(check_one(row, {("T", "q"): 10.5})["status"], "FAIL")  # below the given end
+        for bad in (math.inf, math.nan):
+            self.assertEqual(check_one(row, {("T", "q"): bad})["status"], "FAIL", bad)
+        self.assertEqual(check_one(discrepancy_row(own_band="..13"), {("T", "q"): 12.0})["status"], "DISCREPANCY")
+        for text, message in (("..", "bounds nothing"), ("11..inf", "not finite"), ("nan..13", "not finite")):
+            problems = check.row_problems(discrepancy_row(own_band=text))
+            self.assertTrue(any(message in p for p in problems), (text, problems))
+
     def test_a_reading_must_reproduce_the_published_number(self):
         row = discrepancy_row(kind="reading", alt_quantity="q_alt")
         self.assertEqual(check_one(row, {("T", "q"): 12.0, ("T", "q_alt"): 10.05})["status"], "DISCREPANCY")
