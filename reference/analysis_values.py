@@ -508,7 +508,8 @@ BAND_END_CLASSES = ("live", "closed form", "prediction", "tolerance", "reference
 OWN_BAND_PROVENANCE = {
     ("G-fig8", "eps0_fracture_time"): ("live: eps0_opening_time, the first gap between neighbouring columns (the slab "
                                        "parts after its gaps open)",
-                                       "tolerance: 300, the eps0 run's end (t_max_eps0; -1 = never fails the lower end)"),
+                                       "tolerance: 300, the eps0 run's end (t_max_eps0; -1 = never fails the lower end once a gap "
+                                       "has opened, and with no gap the opening row is NaN)"),
     ("G-fig8", "eps0_opening_from_junction"): ("tolerance: the row's 0.3 cm (the claim 'near the junction' negated)",
                                                "closed form: 1.48 cm, the farthest a gap can be from both band edges: "
                                                "the middle of the free span at the eps0 run's end, (3 - 2 x 0.2 + "
