@@ -1,8 +1,8 @@
 # One command reproduces every figure and table, another runs the tests:
 #   make figures   deps -> build -> every driver -> plots -> check against published numbers
 #   make test      declaration check -> deps -> build -> GoogleTest (ctest) -> quick smoke run of every driver
-#                  -> quick check -> the report on the quick results
-# Other targets: make check, make paper, make bench, make bench-ab BASE=<rev>, make bench-peer, make sanitize, make deps, make clean, make check-targets,
+#                  -> quick check -> the report on the quick results -> a few steps of the peers (make peers-quick)
+# Other targets: make check, make paper, make peers, make bench, make bench-ab BASE=<rev>, make bench-peer, make sanitize, make deps, make clean, make check-targets,
 # make list-targets, make list-runs, make archive, make verify-archive FILE=<tar.gz>, make test-paraview, make test-slurm;
 # make figures LAUNCH=slurm RUN_JOBS=<n> on a cluster.
 # Make's dependency graph reruns a driver only when its binary changed. Threads: `figures` and `quick` run
@@ -37,7 +37,7 @@ ORDERED = $(filter $(TARGETS),$(LONGEST_FIRST)) $(filter-out $(LONGEST_FIRST),$(
 DONE    = $(foreach t,$(ORDERED),$(RESULTS)/$(t)/.done)
 FIGS    = $(foreach t,$(ORDERED),$(FIGURES)/$(t).png)
 
-.PHONY: all figures test sanitize check paper bench bench-ab bench-peer deps build build-drivers configure ctest results plots quick clean help timings \
+.PHONY: all figures test sanitize check paper bench bench-ab bench-peer peers peers-quick deps build build-drivers configure ctest results plots quick clean help timings \
         check-targets list-targets list-runs archive verify-archive test-paraview
 .DEFAULT_GOAL := help
 
@@ -173,7 +173,7 @@ quick:
 	$(PY) paper/build_report.py --results results/quick --figures results/quick/figures --reference reference \
 	  --out results/quick/report/index.html
 
-test: deps check-targets build ctest quick
+test: deps check-targets build ctest quick peers-quick
 
 # A citable archive of one reproduction (tools/archive.py): results (without the store of reusable runs),
 # figures, the report, PROVENANCE.json (code version and uncommitted changes, every driver command line, the
@@ -263,6 +263,24 @@ bench-peer: deps configure
 	cmake --build $(BUILD) --target bench_gray_scenes -j $(JOBS)
 	$(PY) tools/bench_peer.py --steps $(PEER_STEPS) --threads $(PEER_THREADS) --ours $(BIN)/bench_gray_scenes \
 	  --pysph-python $(PY) --out results/bench --bench-csv results/bench.csv
+
+# Independent codes on our scenes (issue 44; tools/peers/run_peers.py): PySPH's implementation of Gray 2001
+# (Debian python3-pysph) runs our plate layouts (build/bin/peer_scenes writes them) with our settings, its tip
+# trace measured by our period finder, beside our own driver at the same row and spacing: results/peers/plate.csv
+# and compare.csv. The first PySPH run compiles its kernels (~1-3 min, cached in ~/.pysph). LAMMPS's MACHDYN
+# (smd/ulsph, smd/tlsph) builds as a plugin of Debian's lmp from Debian's source package
+# (tools/peers/build_machdyn.sh, ~1 min); its rings input is tools/peers/lammps_rings.in. make peers-quick: a few
+# steps of every code into results/quick/peers (part of make test), measuring nothing but running the path.
+PEER_CODE_TARGETS := peer_scenes gray2001_table1_2_plate_periods
+peers: deps configure
+	$(call apt_ensure,python3-pysph)
+	cmake --build $(BUILD) -j $(JOBS) --target $(PEER_CODE_TARGETS)
+	tools/peers/build_machdyn.sh
+	$(PY) tools/peers/run_peers.py --build $(BUILD) --out $(RESULTS)/peers
+peers-quick: deps configure
+	$(call apt_ensure,python3-pysph)
+	cmake --build $(BUILD) -j $(JOBS) --target $(PEER_CODE_TARGETS)
+	$(PY) tools/peers/run_peers.py --build $(BUILD) --out results/quick/peers --quick
 
 # The reproduction report (HTML; paper/build_report.py says why not LaTeX).
 # The check runs first; a FAIL does not stop the report, which shows it.

@@ -28,7 +28,7 @@ sys.path.insert(0, os.path.join(ROOT, "experiments"))
 import targets as declaration  # noqa: E402  (experiments/targets.py)
 
 # Folders of experiments/ that hold no drivers (CMakeLists.txt builds every other experiments/<folder>/*.cpp).
-NOT_DRIVER_FOLDERS = {"frame"}
+NOT_DRIVER_FOLDERS = {"frame", "peers"}  # peers: make peers' tool and PySPH scripts (CMakeLists.txt)
 
 
 def make_reading(root):
