@@ -270,7 +270,8 @@ bench-peer: deps configure
 # and compare.csv. The first PySPH run compiles its kernels (~1-3 min, cached in ~/.pysph). LAMMPS's MACHDYN
 # (smd/ulsph, smd/tlsph) builds as a plugin of Debian's lmp from Debian's source package
 # (tools/peers/build_machdyn.sh, ~1 min); its rings input is tools/peers/lammps_rings.in. make peers-quick: a few
-# steps of every code into results/quick/peers (part of make test), measuring nothing but running the path.
+# steps of every code into results/peers-quick (part of make test; apart from results/quick, which test-slurm compares
+# with its own quick run), measuring nothing but running the path.
 PEER_CODE_TARGETS := peer_scenes gray2001_table1_2_plate_periods
 peers: deps configure
 	$(call apt_ensure,python3-pysph)
@@ -280,7 +281,7 @@ peers: deps configure
 peers-quick: deps configure
 	$(call apt_ensure,python3-pysph)
 	cmake --build $(BUILD) -j $(JOBS) --target $(PEER_CODE_TARGETS)
-	$(PY) tools/peers/run_peers.py --build $(BUILD) --out results/quick/peers --quick
+	$(PY) tools/peers/run_peers.py --build $(BUILD) --out results/peers-quick --quick
 
 # The reproduction report (HTML; paper/build_report.py says why not LaTeX).
 # The check runs first; a FAIL does not stop the report, which shows it.
