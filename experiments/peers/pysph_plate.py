@@ -14,7 +14,7 @@ The clamp, two ways (--clamp):
            our GraySolver (Motion::Fixed).
   walls    PySPH's own oscillating_plate.py: the held particles are a separate 'solids' array, sigma = 0 and
            rho = rho0 throughout.
-What stays PySPH's and differs from ours (the peer rows' tolerance, reference/G-tab1.csv): PySPH's continuity
+What stays PySPH's and differs from ours (what a peer row's tolerance must allow for; no such row yet, issue 44): PySPH's continuity
 and velocity gradient take the particle velocity v, ours the XSPH velocity (Gray 2001 (3.6): "differentiate the
 XSPH velocity"); its integrator is EPEC (two force evaluations a step), ours the predictor-corrector of
 src/core/predictor_corrector.hpp.

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """make peers: independent codes on our scenes, measured with our measurement code (issue 44).
 
-For every case of CASES (scene, row, spacing, peer settings):
+For every case of PLATE_CASES (QUICK_CASES with --quick: row, thickness, V_f, mu, spacing, the peer's clamp):
   1. build/bin/peer_scenes --action layout writes our particles and settings into <out>/<case>/layout/;
   2. the peer runs them (PySPH: experiments/peers/pysph_plate.py) and leaves its trace in <out>/<case>/;
   3. peer_scenes --action measure measures that trace with the functions our drivers use;
