@@ -264,24 +264,26 @@ bench-peer: deps configure
 	$(PY) tools/bench_peer.py --steps $(PEER_STEPS) --threads $(PEER_THREADS) --ours $(BIN)/bench_gray_scenes \
 	  --pysph-python $(PY) --out results/bench --bench-csv results/bench.csv
 
-# Independent codes on our scenes (issue 44; tools/peers/run_peers.py): PySPH's implementation of Gray 2001
-# (Debian python3-pysph) runs our plate layouts (build/bin/peer_scenes writes them) with our settings, its tip
-# trace measured by our period finder, beside our own driver at the same row and spacing: results/peers/plate.csv
-# and compare.csv. The first PySPH run compiles its kernels (~1-3 min, cached in ~/.pysph). LAMMPS's MACHDYN
-# (smd/ulsph, smd/tlsph) builds as a plugin of Debian's lmp from Debian's source package
-# (tools/peers/build_machdyn.sh, ~1 min); its rings input is tools/peers/lammps_rings.in. make peers-quick: a few
-# steps of every code into results/peers-quick (part of make test; apart from results/quick, which test-slurm compares
-# with its own quick run), measuring nothing but running the path.
-PEER_CODE_TARGETS := peer_scenes gray2001_table1_2_plate_periods
-peers: deps configure
+# Independent codes on our scenes (issue 44; tools/peers/run_peers.py, one module tools/peers/scene_<scene>.py per
+# scene): PySPH's implementation of Gray 2001 (Debian python3-pysph) and LAMMPS's MACHDYN (smd/ulsph, smd/tlsph,
+# built as a plugin of Debian's lmp by tools/peers/build_machdyn.sh, ~1 min) run our layouts
+# (build/bin/peer_<scene> --action layout) with our settings, their traces measured by our functions
+# (--action measure), beside our own drivers at the same settings: results/peers/<scene>.csv (every run) and
+# compare.csv (published | ours | peer | theory, and the speed per force evaluation). A case that is done is
+# not rerun (its runs.csv); PEERS_FLAGS='--scenes plate --cases mu0.6 --force' selects. The first PySPH run
+# compiles its kernels (~1-3 min, cached in ~/.pysph). make peers-quick: a few steps of every code path into
+# results/peers-quick (part of make test; apart from results/quick, which test-slurm compares with its own quick
+# run), measuring nothing.
+PEER_THREADS_RUN ?= 1
+PEERS_FLAGS ?=
+peers: deps build
 	$(call apt_ensure,python3-pysph)
-	cmake --build $(BUILD) -j $(JOBS) --target $(PEER_CODE_TARGETS)
 	tools/peers/build_machdyn.sh
-	$(PY) tools/peers/run_peers.py --build $(BUILD) --out $(RESULTS)/peers
-peers-quick: deps configure
+	$(PY) tools/peers/run_peers.py --build $(BUILD) --out $(RESULTS)/peers --threads $(PEER_THREADS_RUN) $(PEERS_FLAGS)
+peers-quick: deps build
 	$(call apt_ensure,python3-pysph)
-	cmake --build $(BUILD) -j $(JOBS) --target $(PEER_CODE_TARGETS)
-	$(PY) tools/peers/run_peers.py --build $(BUILD) --out results/peers-quick --quick
+	tools/peers/build_machdyn.sh
+	$(PY) tools/peers/run_peers.py --build $(BUILD) --out results/peers-quick --quick --force
 
 # The reproduction report (HTML; paper/build_report.py says why not LaTeX).
 # The check runs first; a FAIL does not stop the report, which shows it.

@@ -131,19 +131,10 @@ int main(int argc, char** argv) {
       const double E = sph::young_from_bulk_shear(K, row.mu), nu = sph::poisson_ratio_from_bulk_shear(K, row.mu);
       const double T_thin = scenes::plate_theory_period(E, nu, row.H, 20.0, 1.0);
       const double T_reading = scenes::plate_theory_period(E, nu, row.H - paper_dp, 20.0, 1.0);
-      scenes::PlateRunSpec s;
-      s.plate.L = 20.0;
-      s.plate.H = row.H;
-      s.plate.dp = spacing;
-      s.plate.clamp_length = clamp;
-      s.plate.Vf = row.Vf;
-      s.scheme = scheme;
-      s.scheme.mu = row.mu;
-      s.t_end = periods * T_thin;
-      s.stop_after_crossings = crossings;
+      sph::GrayParameters row_scheme = scheme;
+      row_scheme.mu = row.mu;
+      scenes::PlateRunSpec s = scenes::table_plate_run(row.H, row.Vf, spacing, clamp, row_scheme, periods, crossings);
       s.max_steps = max_steps;
-      s.sample_dt = 0.5;
-      s.fracture_check_dt = 100.0;  // as Fig 4 and the work-precision sweep, so that their runs can serve these
       const std::string name = tag.empty() ? key(row) : tag + "_" + key(row);
       const auto res = scenes::run_plate(s, {}, "plate " + name);
       if (!res.blow_up.empty()) throw std::runtime_error(name + ": " + res.blow_up);

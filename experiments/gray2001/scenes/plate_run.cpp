@@ -5,6 +5,7 @@
 
 #include "core/diagnostics.hpp"
 #include "core/fragments.hpp"
+#include "core/materials.hpp"
 #include "core/run_loop.hpp"
 #include "frame/progress.hpp"
 #include "gray2001/scenes/plate_run_cache.hpp"
@@ -24,6 +25,24 @@ PlateRunSpec fig4_plate_run(int n, double Vf, double clamp_length, const sph::Gr
   s.sample_dt = 0.5;
   s.fracture_check_dt = 100.0;
   s.power_budget = true;  // issue 15 (a): where the energy of the finest run comes from (Fig 4's energy rows)
+  return s;
+}
+
+PlateRunSpec table_plate_run(double H, double Vf, double dp, double clamp_length, const sph::GrayParameters& scheme,
+                             double periods, int crossings) {
+  const double K = scheme.rho0 * scheme.c0 * scheme.c0;
+  const double E = sph::young_from_bulk_shear(K, scheme.mu), nu = sph::poisson_ratio_from_bulk_shear(K, scheme.mu);
+  PlateRunSpec s;
+  s.plate.L = 20.0;
+  s.plate.H = H;
+  s.plate.dp = dp;
+  s.plate.clamp_length = clamp_length;
+  s.plate.Vf = Vf;
+  s.scheme = scheme;
+  s.t_end = periods * plate_theory_period(E, nu, H, 20.0, scheme.rho0);
+  s.stop_after_crossings = crossings;
+  s.sample_dt = 0.5;
+  s.fracture_check_dt = 100.0;
   return s;
 }
 

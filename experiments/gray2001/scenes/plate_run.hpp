@@ -50,6 +50,13 @@ struct PlateRunResult {
 /// reference both build it here: one run, which the run store (plate_run_cache.hpp) steps once for both.
 PlateRunSpec fig4_plate_run(int n, double Vf, double clamp_length, const sph::GrayParameters& scheme, double periods = 1.0);
 
+/// Tables 1-2's run of one row (Gray 2001 Sec 7.1): L = 20, thickness H at spacing dp, sampled every 0.5, checked
+/// for fracture every 100 (as Fig 4's, so that its runs can serve these), stopped at the tip's `crossings`-th
+/// zero crossing, at most `periods` thin-plate periods (7.1) of the 3D moduli of K = rho0 c0^2 and scheme.mu.
+/// The Table 1-2 driver and make peers' plate (experiments/peers/peer_plate.cpp) both build it here.
+PlateRunSpec table_plate_run(double H, double Vf, double dp, double clamp_length, const sph::GrayParameters& scheme,
+                             double periods, int crossings);
+
 /// Runs the plate; `snapshot(t, solver, body)` is called every sample if given (for HDF5 output).
 PlateRunResult run_plate(const PlateRunSpec& s,
                          const std::function<void(const sph::GraySolver&, const sph::ElasticBody&)>& on_sample = {},

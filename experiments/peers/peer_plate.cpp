@@ -1,4 +1,5 @@
-// Our scenes for independent codes (make peers, issue 44), and our measurement of what they return.
+// Gray 2001's plate for independent codes (make peers, issue 44; one such tool per scene, peer_<scene>.cpp),
+// and our measurement of the tip trace they return.
 //
 //   --action layout   writes the scene as we build it: layout.csv (one row per particle: position, velocity,
 //                     mass, density, fixed flag, the tracked tip) and settings.csv (name,value: every scheme
@@ -6,11 +7,11 @@
 //                     particles, not a re-derivation of them.
 //   --action measure  reads the peer's trace (--trace: columns t,y_tip for the plate) and measures it with the
 //                     functions our own drivers use (scenes::zero_crossings, period_from_crossings,
-//                     half_cycle_extremes): values_peer_scenes.csv.
+//                     half_cycle_extremes): values_peer_plate.csv.
 // Parameters (source): the plate of Gray, Monaghan & Swift 2001 Sec 7.1 as Tables 1-2 run it here
-//   (experiments/gray2001/gray2001_table1_2_plate_periods.cpp: L = 20, clamp 2, 3 layers, sample 0.5, stop at
-//   the tip's first zero crossing, T = 2 t_1, t_end 2 thin-plate periods); the scheme's defaults from
-//   src/updated_lagrangian/parameters.hpp (mu set per row).
+//   (scenes::table_plate_run, which experiments/gray2001/gray2001_table1_2_plate_periods.cpp runs: L = 20,
+//   clamp 2, 3 layers, sample 0.5, stop at the tip's first zero crossing, T = 2 t_1, t_end 2 thin-plate
+//   periods); the scheme's defaults from src/updated_lagrangian/parameters.hpp (mu set per row).
 #include <cmath>
 #include <stdexcept>
 
@@ -20,17 +21,15 @@
 #include "gray2001/scenes/plate_run.hpp"
 
 int main(int argc, char** argv) {
-  sph::Driver d("peer_scenes", "peers", "our scenes written for independent codes, and their traces measured");
-  std::string scene = "plate", action = "layout", trace;
-  double dp = 0.2, H = 2.0, L = 20.0, clamp = 2.0, Vf = 0.01, periods = 2.0;
+  sph::Driver d("peer_plate", "peers", "our plate written for independent codes, and their tip traces measured");
+  std::string action = "layout", trace;
+  double dp = 0.2, H = 2.0, clamp = 2.0, Vf = 0.01, periods = 2.0;
   int crossings = 1;
   sph::GrayParameters scheme;
-  d.param("scene", scene, "the scene").one_of({"plate"});
   d.param("action", action, "layout: write our particles and settings; measure: measure a peer's trace").one_of({"layout", "measure"});
   d.param("trace", trace, "the peer's trace (action measure): CSV with columns t,y_tip");
   d.param("dp", dp, "particle spacing (H/dp an integer)").positive();
   d.param("H", H, "plate thickness").positive();
-  d.param("L", L, "plate free length").positive();
   d.param("clamp-length", clamp, "plate length held between the fixed layers").non_negative();
   d.param("Vf", Vf, "tip speed of the initial mode / c0").positive();
   d.param("mu", scheme.mu, "shear modulus / (rho0 c0^2)").positive();
@@ -58,13 +57,8 @@ int main(int argc, char** argv) {
       d.value("t_last", samples.back().t, "the trace's last sample");
       return;
     }
-    scenes::PlateSpec ps;
-    ps.L = L;
-    ps.H = H;
-    ps.dp = dp;
-    ps.clamp_length = clamp;
-    ps.Vf = Vf;
-    const scenes::Plate plate = scenes::make_plate(ps, scheme);
+    const scenes::PlateRunSpec run = scenes::table_plate_run(H, Vf, dp, clamp, scheme, periods, crossings);
+    const scenes::Plate plate = scenes::make_plate(run.plate, scheme);
     const sph::ElasticBody& b = plate.body;
     const double h = scheme.h_over_dp * dp;
     const sph::CubicSpline kernel(2);
@@ -80,8 +74,8 @@ int main(int argc, char** argv) {
         {"dp", dp}, {"h", h}, {"W_dp", kernel.W(dp, h)}, {"rho0", scheme.rho0}, {"c0", scheme.c0}, {"K", K},
         {"mu", scheme.mu}, {"E", E}, {"nu", nu}, {"eps_artificial", scheme.eps_artificial},
         {"n_artificial", static_cast<double>(scheme.n_artificial)}, {"eps_xsph", scheme.eps_xsph}, {"alpha", scheme.alpha},
-        {"beta", scheme.beta}, {"dt", dt}, {"t_end", periods * scenes::plate_theory_period(E, nu, H, L, scheme.rho0)},
-        {"sample_dt", 0.5}, {"stop_after_crossings", static_cast<double>(crossings)}, {"particles", static_cast<double>(b.size())}};
+        {"beta", scheme.beta}, {"dt", dt}, {"t_end", run.t_end}, {"sample_dt", run.sample_dt},
+        {"stop_after_crossings", static_cast<double>(run.stop_after_crossings)}, {"particles", static_cast<double>(b.size())}};
     for (const auto& [name, value] : rows) settings.row(name, value);
     d.value("particles", static_cast<double>(b.size()), "particles of the layout, fixed ones included");
     d.value("dt", dt, "our time step for this scene");

@@ -1,0 +1,129 @@
+"""make peers' plate (Gray 2001 Sec 7.1, Tables 1-2): PySPH's ElasticSolidsScheme on our layouts, beside ours.
+
+A case is a row of Table 1 or 2 at a spacing: build/bin/peer_plate --action layout writes our particles and
+settings, PySPH runs them (experiments/peers/pysph_plate.py) in each of the case's variants, peer_plate
+--action measure measures each trace with our period finder, and our Table 1-2 driver runs the same row at
+the same spacing. The variants:
+  ours_clamp    PySPH's equations, our clamp (held particles carry stress and do not move)
+  xsph_cont     the same with continuity and the velocity gradient of the XSPH velocity (3.6), as ours:
+                then only the integrator and the code differ
+  walls         PySPH's own example clamp (held particles a wall array with sigma = 0)
+The cases: Table 1's three V_f = 0.01 rows and its V_f = 0.05, mu = 0.6 row at the paper's n = 20 (dp = 0.1),
+Table 2's three V_f = 0.01 rows and its two open mu = 0.6 rows at the paper's dp = 0.1 (n = 10), and the
+convergence of one row (Fig 4's plate, H = 2, V_f = 0.01, mu = 0.22) over n = 5, 10, 20.
+"""
+import os
+
+import peer_io
+
+NAME = "plate"
+RUN_COLUMNS = ["case", "code", "variant", "version", "row", "table", "H", "Vf", "mu", "dp", "particles", "dt", "steps",
+               "wall_s", "particle_steps_per_s", "force_evals_per_step", "T_sph", "crossings", "tip_amplitude",
+               "T_theory_reading", "T_published"]
+FULL = ["ours_clamp", "xsph_cont", "walls"]
+PEER_ARGS = {"ours_clamp": ["--clamp", "ours"], "xsph_cont": ["--clamp", "ours", "--continuity", "xsph"],
+             "walls": ["--clamp", "walls"]}
+
+
+def published(root):
+    """The published T_sph of every row, read from reference/G-tab1.csv and G-tab2.csv (their sources are there)."""
+    out = {}
+    for t in ("G-tab1", "G-tab2"):
+        for r in peer_io.read_table(os.path.join(root, "reference", f"{t}.csv")):
+            if r["quantity"].startswith("T_sph_H"):
+                out[r["quantity"][len("T_sph_"):]] = float(r["published"])
+    return out
+
+def row_name(H, Vf, mu):
+    return f"H{H:g}_Vf{Vf:g}_mu{mu:g}"
+
+
+def cases(quick):
+    if quick:
+        return [(2.0, 0.01, 0.6, 0.5, ["ours_clamp", "xsph_cont"])]
+    t1 = [(2.0, 0.01, mu, 0.1, FULL if mu == 0.6 else FULL[:2]) for mu in (0.22, 0.3, 0.6)]
+    t1.append((2.0, 0.05, 0.6, 0.1, FULL[:2]))
+    t2 = [(1.0, 0.01, mu, 0.1, FULL[:2]) for mu in (0.22, 0.3, 0.6)]
+    t2 += [(1.0, Vf, 0.6, 0.1, FULL[:2]) for Vf in (0.03, 0.05)]
+    conv = [(2.0, 0.01, 0.22, dp, FULL[:2]) for dp in (0.4, 0.2)]
+    return conv + t1 + t2
+
+
+def case_name(case):
+    H, Vf, mu, dp, _ = case
+    return f"{row_name(H, Vf, mu)}_dp{dp:g}"
+
+
+def run_case(ctx, case, d):
+    H, Vf, mu, dp, variants = case
+    row = row_name(H, Vf, mu)
+    common = ["--dp", str(dp), "--H", str(H), "--Vf", str(Vf), "--mu", str(mu)]
+    layout = os.path.join(d, "layout")
+    os.makedirs(layout, exist_ok=True)
+    ctx.run([ctx.bin("peer_plate"), "--action", "layout", "--out", layout] + common, os.path.join(d, "layout.log"))
+    s = peer_io.settings(layout)
+    # Ours first: the same row at the same spacing by its own driver.
+    ours_dir = os.path.join(d, "ours")
+    os.makedirs(ours_dir, exist_ok=True)
+    cmd = [ctx.bin("gray2001_table1_2_plate_periods"), "--dp", str(dp), "--table", "1" if H == 2.0 else "2",
+           "--rows", row, "--coarse-reference", "false", "--same-n-reading", "false", "--out", ours_dir]
+    if ctx.quick:
+        cmd += ["--max-steps", "30"]
+    ctx.run(cmd, os.path.join(ours_dir, "run.log"))
+    p = peer_io.read_table(os.path.join(ours_dir, "periods.csv"))[0]
+    base = dict(case=case_name(case), row=row, table=1 if H == 2.0 else 2, H=H, Vf=Vf, mu=mu, dp=dp,
+                T_theory_reading=float(p["T_theory_reading"]), T_published=published(ctx.root).get(row, float("nan")))
+    rows = [dict(base, code="ours", variant="ours", version=peer_io.header(os.path.join(ours_dir, "periods.csv")).get("code_version", ""),
+                 particles=int(float(p["particles"])), dt=float(p["dt"]), steps=int(float(p["steps"])),
+                 wall_s=float(p["wall_s"]), force_evals_per_step=2,
+                 T_sph=float(p["T_sph"]) if not ctx.quick else float("nan"), crossings=float("nan"),
+                 tip_amplitude=float(p["tip_amplitude"]))]
+    version = ctx.version("pysph")
+    for variant in variants:
+        trace = os.path.join(d, f"trace_pysph_{variant}.csv")
+        cmd = [ctx.py, os.path.join(ctx.root, "experiments", "peers", "pysph_plate.py"), "--layout", layout,
+               "--trace", trace, "--disable-output", "-d", os.path.join(d, f"pysph_{variant}")] + PEER_ARGS[variant]
+        if ctx.threads > 1:
+            cmd.append("--openmp")
+        if ctx.quick:
+            cmd += ["--max-steps", "30"]
+        ctx.run(cmd, os.path.join(d, f"pysph_{variant}.log"))
+        measured = os.path.join(d, f"measured_pysph_{variant}")
+        os.makedirs(measured, exist_ok=True)
+        ctx.run([ctx.bin("peer_plate"), "--action", "measure", "--trace", trace, "--out", measured] + common,
+                os.path.join(measured, "measure.log"))
+        m = peer_io.values(os.path.join(measured, "values_peer_plate.csv"))
+        meta = peer_io.header(trace)
+        rows.append(dict(base, code="pysph", variant=variant, version=version, particles=int(meta["particles"]),
+                         dt=s["dt"], steps=int(meta["steps"]), wall_s=float(meta["wall_s"]), force_evals_per_step=2,
+                         T_sph=m["T_sph"] if not ctx.quick else float("nan"), crossings=int(m["crossings"]),
+                         tip_amplitude=m["tip_amplitude"]))
+    for r in rows:
+        r["particle_steps_per_s"] = r["particles"] * r["steps"] / r["wall_s"] if r["wall_s"] > 0 else float("nan")
+    return rows
+
+
+def compare(rows):
+    from run_peers import num, ratio
+    ours = {(r["row"], num(r["dp"])): r for r in rows if r["code"] == "ours"}
+    out = []
+    for r in rows:
+        if r["code"] == "ours":
+            continue
+        o = ours.get((r["row"], num(r["dp"])))
+        if o is None:
+            continue
+        speed = num(o["particle_steps_per_s"]) * num(o["force_evals_per_step"])
+        peer_speed = num(r["particle_steps_per_s"]) * num(r["force_evals_per_step"])
+        out.append(dict(scene=NAME, case=r["case"], quantity=f"T_sph_{r['row']}", dp=r["dp"], published=r["T_published"],
+                        theory=r["T_theory_reading"], ours=o["T_sph"], code=r["code"], variant=r["variant"],
+                        peer=r["T_sph"], peer_over_ours=ratio(r["T_sph"], o["T_sph"]),
+                        ours_over_theory=ratio(o["T_sph"], r["T_theory_reading"]),
+                        peer_over_theory=ratio(r["T_sph"], r["T_theory_reading"]),
+                        ours_particle_steps_per_s=o["particle_steps_per_s"],
+                        peer_particle_steps_per_s=r["particle_steps_per_s"],
+                        ours_force_evals_per_step=o["force_evals_per_step"],
+                        peer_force_evals_per_step=r["force_evals_per_step"],
+                        ours_over_peer_per_force_eval=speed / peer_speed if peer_speed > 0 else float("nan"),
+                        note="period from the tip's first zero crossing, T = 2 t_1, by our finder for both"))
+    return out
