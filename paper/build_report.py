@@ -24,7 +24,8 @@ import targets as declaration  # noqa: E402  (experiments/targets.py: the reader
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "reference"))
 import check as reference_check  # noqa: E402  (reference/check.py: whose discrepancy each kind is, KINDS)
 
-KIND_LABEL = {"reading": "the paper's: another reading", "erratum": "the paper's: erratum", "open": "open"}
+KIND_LABEL = {"reading": "the paper's: another reading", "erratum": "the paper's: erratum", "open": "open",
+              "peer": "ours against an independent code"}
 STATUS_COLOUR = {"PASS": "#1a7f37", "DISCREPANCY": "#9a6700", "FAIL": "#cf222e"}
 
 
@@ -67,6 +68,41 @@ def timings_html(path):
     body = "".join("<tr>" + "".join(f"<td>{html.escape(str(r[c]))}</td>" for c in cols) + "</tr>" for _, r in t.iterrows())
     return (f"<p>Wall time of every driver of these results, longest first: {total:.0f} s in all "
             f"({total / 60:.1f} min; build, plots and check not included).</p><table><tr>{head}</tr>{body}</table>")
+
+
+def fmt(x, rel=False):
+    """A compare.csv number for the table: 6 significant digits, a relative difference as a signed percentage."""
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        return str(x)
+    if v != v:
+        return ""
+    return f"{100 * v:+.2f}%" if rel else f"{v:.6g}"
+
+
+def peers_html(results):
+    """Ours beside the independent codes of make peers (results/peers/compare.csv, tools/peers/run_peers.py):
+    one table per scene, published | theory | ours | peer with the differences and the speed per force
+    evaluation."""
+    path = os.path.join(results, "peers", "compare.csv")
+    if not os.path.exists(path):
+        return ("<p>No results of the independent codes in these results (<code>make peers</code> writes "
+                "<code>results/peers/compare.csv</code>; it takes hours and <code>make figures</code> does not run it).</p>")
+    t = pd.read_csv(path, comment="#", dtype=str, keep_default_na=False)
+    cols = [("case", "case", False), ("quantity", "quantity", False), ("published", "published", False),
+            ("theory", "theory", False), ("ours", "ours", False), ("code", "peer code", False), ("variant", "variant", False),
+            ("peer", "peer", False), ("peer_over_ours", "peer / ours - 1", True), ("ours_over_theory", "ours / theory - 1", True),
+            ("ours_over_peer_per_force_eval", "ours / peer, particle-evaluations per s", False)]
+    out = ["<p>Each peer runs our layout with our settings where it accepts them; its trace is measured by our "
+           "measurement code (<code>build/bin/peer_&lt;scene&gt; --action measure</code>), and ours is our own driver "
+           "at the same resolution. Variants and what differs between the codes: <code>tools/peers/scene_*.py</code>.</p>"]
+    for scene, rows in t.groupby("scene", sort=False):
+        head = "".join(f"<th>{html.escape(label)}</th>" for _, label, _ in cols)
+        body = "".join("<tr>" + "".join(f"<td>{html.escape(fmt(r[c], rel) if c not in ('case', 'quantity', 'code', 'variant') else r[c])}</td>"
+                                        for c, _, rel in cols) + "</tr>" for _, r in rows.iterrows())
+        out.append(f"<h3>{html.escape(scene)}</h3><table><tr>{head}</tr>{body}</table>")
+    return "".join(out)
 
 
 def report_targets(path):
@@ -125,7 +161,7 @@ row that does not hold.</p>
 {counts.get('FAIL', 0)} FAIL; of the discrepancies {kinds.get('paper', 0)} the paper's, {kinds.get('open', 0)} open.</p>"""]
     parts.append("<h2>Contents</h2><ul>" + "".join(
         f'<li><a href="#{t.target}">{html.escape(t.target)}: {html.escape(t.title)}</a></li>' for _, t in targets.iterrows())
-                 + '<li><a href="#timings">Run times</a></li></ul>')
+                 + '<li><a href="#peers">Independent codes</a></li><li><a href="#timings">Run times</a></li></ul>')
     for _, t in targets.iterrows():
         parts.append(f'<h2 id="{t.target}">{html.escape(t.target)}: {html.escape(t.title)}</h2>')
         parts.append(f"<p><i>{html.escape(t.work)}</i></p><p>{html.escape(t.description)}</p>")
@@ -134,6 +170,7 @@ row that does not hold.</p>
             parts.append(figure_html(fig))
         rows = check[check.target == t.target]
         parts.append(table_html(rows) if len(rows) else "<p>No published numbers are checked for this target.</p>")
+    parts.append('<h2 id="peers">Independent codes on our scenes (make peers)</h2>' + peers_html(args.results))
     parts.append('<h2 id="timings">Run times</h2>' + timings_html(os.path.join(args.results, "timings.csv")))
     parts.append("</body></html>")
     os.makedirs(os.path.dirname(args.out), exist_ok=True)

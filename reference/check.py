@@ -29,6 +29,15 @@ expect:   match        out of tolerance is a FAIL
                                    paper's error; no alternative.
                        reading and erratum rows are the paper's discrepancies, open rows ours; the check table
                        (column kind) and the summary count them apart.
+          peer         ours against an independent code running the same scene at the same settings (make
+                       peers, issue 44): the reproduced value is <code>_<variant>_over_ours_<quantity>_dp<dp>, the
+                       peer's value over ours - 1, from <results>/peers/values_peers.csv (tools/peers/run_peers.py);
+                       published is the difference expected (0), the tolerance derived before the peer run from what
+                       differs between the two implementations; out of tolerance is a FAIL (our implementation has
+                       drifted from the independent one). Peer rows are checked only when that file is present
+                       (make peers takes hours; make figures does not run it): otherwise they are skipped and the
+                       summary names how many; a peers run whose rows of ours come from more than one code version
+                       FAILs them (stale results mixed with new ones).
 quick:    no = not checked in --quick mode (the quick run cannot resolve it); anything else = checked.
 settings  (optional column) parameters a row accepts set on the command line, separated by spaces.
 kind, own_band  (columns a file needs only when it has discrepancy rows) see expect.
@@ -199,12 +208,14 @@ def row_problems(r):
     if r["compare"] not in COMPARES:
         out.append(f"{where}: compare must be one of {', '.join(COMPARES)}, not '{r['compare']}'")
     expect = r["expect"] or "match"
-    if expect == "match":
+    if expect in ("match", "peer"):
         if r["kind"] or r["own_band"]:
             out.append(f"{where}: kind and own_band belong to discrepancy rows")
+        if expect == "peer" and r["quick"].strip().lower() != "no":
+            out.append(f"{where}: a peer row is not checked in --quick mode (quick must be no)")
         return out
     if expect != "discrepancy":
-        return out + [f"{where}: expect must be match or discrepancy, not '{expect}'"]
+        return out + [f"{where}: expect must be match, discrepancy or peer, not '{expect}'"]
     if r["kind"] not in KINDS:
         out.append(f"{where}: a discrepancy row needs kind reading, erratum or open, not '{r['kind']}'")
     if r["kind"] == "reading" and not r["alt_quantity"]:
@@ -260,12 +271,53 @@ class Source:
         return None
 
 
+PEER_VALUES = os.path.join("peers", "values_peers.csv")
+
+
+def load_peer_values(results_dir):
+    """({quantity: value}, why the peer rows cannot be checked or None) from <results>/peers/values_peers.csv;
+    (None, None) when there is no such file (the peer rows are then skipped)."""
+    path = os.path.join(results_dir, PEER_VALUES)
+    if not os.path.exists(path):
+        return None, None
+    versions = read_header(path).get("ours_code_versions", "").split()
+    try:
+        df = pd.read_csv(path, comment="#", dtype={"quantity": str, "note": str}, keep_default_na=False)
+        if not {"quantity", "value"} <= set(df.columns):
+            raise ValueError("no quantity,value header")
+        values = {r["quantity"]: float(r["value"]) if r["value"] != "" else math.nan for _, r in df.iterrows()}
+    except (pd.errors.ParserError, pd.errors.EmptyDataError, ValueError) as e:
+        return {}, f"{PEER_VALUES} unreadable ({e})"
+    if len(versions) > 1:
+        return values, f"{PEER_VALUES}: our runs of the peers' cases come from different code versions ({', '.join(versions)}): rerun make peers"
+    return values, None
+
+
+def check_peer_row(row, peer_values, why_not):
+    q, published, tol, compare = row["quantity"], float(row["published"]), float(row["tolerance"] or 0), row["compare"]
+    reproduced = peer_values.get(q)
+    out = {"target": row["target"], "quantity": q, "published": row["published"], "kind": "peer",
+           "reproduced": "" if reproduced is None else f"{reproduced:.6g}",
+           "tolerance": describe_tolerance(compare, tol), "source": row["source"]}
+    if why_not:
+        return {**out, "status": "FAIL", "note": f"refused: {why_not}"}
+    if reproduced is None:
+        return {**out, "status": "FAIL", "note": f"no such value in {PEER_VALUES} (make peers did not run this case)"}
+    if not math.isfinite(reproduced):
+        return {**out, "status": "FAIL", "note": "the peer's or our value is not finite"}
+    ok = within(compare, reproduced, published, tol)
+    note = row["why_tolerance"] if ok else f"out of tolerance: our implementation and the peer's differ; {row['why_tolerance']}"
+    return {**out, "status": "PASS" if ok else "FAIL", "note": note}
+
+
 def load_values(results_dir):
     """{(target, quantity): value}, {(target, quantity): Source} and {target: why some of its values could not
     be read} (a values file cut short by an interrupted run: its rows then FAIL naming it)."""
     values, sources, unreadable = {}, {}, {}
     for path in sorted(glob.glob(os.path.join(results_dir, "*", "values_*.csv"))):
         target = os.path.basename(os.path.dirname(path))
+        if target == "peers":  # load_peer_values: no target of its own
+            continue
         record = os.path.join(os.path.dirname(path), "timing_" + os.path.basename(path)[len("values_"):])
         source = Source(os.path.relpath(path, results_dir), read_header(path),
                         read_header(record) if os.path.exists(record) else None)
@@ -419,11 +471,18 @@ def main():
     ref = load_reference(args.reference)
     values, sources, unreadable = load_values(args.results)
     arguments, mixed = target_arguments(), mixed_versions(sources)
-    rows = []
+    peer_values, peers_refused = load_peer_values(args.results)
+    rows, skipped_peer = [], []
     for _, r in ref.iterrows():
         if args.targets and r["target"] not in args.targets:
             continue
         if args.quick and r["quick"].strip().lower() == "no":
+            continue
+        if r["expect"] == "peer":
+            if peer_values is None:
+                skipped_peer.append(f"{r['target']}/{r['quantity']}")
+            else:
+                rows.append(check_peer_row(r, peer_values, peers_refused))
             continue
         rows.append(check_row(r, values, sources, arguments.get(r["target"], set()), args.quick, mixed, unreadable))
     out_path = os.path.join(args.results, "check.csv")
@@ -444,6 +503,11 @@ def main():
     print(f"\ncheck: {len(rows)} rows: {n['PASS']} PASS, {n['DISCREPANCY']} DISCREPANCY "
           f"({discrepancy_kinds(table)}), {n['FAIL']} FAIL"
           f"  ({len(unreferenced)} further reproduced values without a published counterpart) -> {out_path}")
+    peer_rows = table[table.kind == "peer"]
+    if len(peer_rows) or skipped_peer:
+        print(f"check: peer rows (ours against independent codes): {len(peer_rows)} checked"
+              f" ({int((peer_rows.status == 'PASS').sum())} PASS), {len(skipped_peer)} skipped"
+              + (f" (no {os.path.join(args.results, PEER_VALUES)}: make peers)" if skipped_peer else ""))
     for _, r in table[table.status == "FAIL"].iterrows():
         print(f"  FAIL {r.target}/{r.quantity}: {r.note}")
     return 1 if n["FAIL"] else 0

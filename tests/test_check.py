@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """reference/check.py fails or refuses what it must: a NaN, a missing values file, a missing row, a parameter
 set on the command line that nothing names, a stale code version, a --quick run checked as a full one,
-results that do not record their settings, and a run that did not complete (no completion record); and passes the same values when nothing is wrong (so that each
+results that do not record their settings, and a run that did not complete (no completion record); a peer row
+(ours against an independent code) out of tolerance, missing, not finite or of mixed versions; and passes the same values when nothing is wrong (so that each
 failure below is the one it names, not a broken fixture). A malformed reference file (a missing column, a
 duplicated row, a non-numeric tolerance, an unknown compare mode) stops it, naming file and line.
 
@@ -220,6 +221,67 @@ class DiscrepancyContract(unittest.TestCase):
         self.assertTrue(any("must bound its own value" in p for p in check.row_problems(discrepancy_row(own_band=""))))
         self.assertTrue(any("needs alt_quantity" in p for p in check.row_problems(discrepancy_row(kind="reading"))))
         self.assertEqual(check.row_problems(discrepancy_row()), [])
+
+
+def peer_row(**kw):
+    """A reference row of expect = peer: the peer's value over ours - 1 within 0.005 of 0."""
+    row = {"target": "T", "quantity": "pysph_v_over_ours_T_sph_x_dp0.1", "published": "0", "unit": "1",
+           "compare": "abs_le", "tolerance": "0.005", "why_tolerance": "w", "source": "s", "expect": "peer",
+           "alt_quantity": "", "analysis_value": "", "explanation": "", "quick": "no", "kind": "", "own_band": "",
+           "ref_file": "T.csv"}
+    row.update(kw)
+    return row
+
+
+def write_peer_values(folder, rows, versions="abc123"):
+    os.makedirs(os.path.join(folder, "peers"), exist_ok=True)
+    with open(os.path.join(folder, "peers", "values_peers.csv"), "w", newline="") as f:
+        f.write(f"# written_by = fixture\n# ours_code_versions = {versions}\n")
+        w = csv.writer(f)
+        w.writerow(["quantity", "value", "note"])
+        for q, v in rows:
+            w.writerow([q, repr(v), "fixture"])
+
+
+class PeerRows(unittest.TestCase):
+    """A peer row (ours against an independent code, make peers) is checked against results/peers/values_peers.csv
+    when it is present: within its tolerance PASS, out of it, missing, not finite or of mixed code versions FAIL;
+    without the file it is skipped, never counted as a pass."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+        self.q = peer_row()["quantity"]
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def check(self):
+        values, why = check.load_peer_values(self.dir)
+        return values, check.check_peer_row(peer_row(), values, why) if values is not None else None
+
+    def test_absent_peer_results_skip_the_row(self):
+        self.assertEqual(self.check(), (None, None))
+
+    def test_within_and_out_of_tolerance(self):
+        for value, status in ((0.004, "PASS"), (-0.0049, "PASS"), (0.006, "FAIL"), (-0.02, "FAIL")):
+            write_peer_values(self.dir, [(self.q, value)])
+            self.assertEqual(self.check()[1]["status"], status, value)
+
+    def test_missing_nonfinite_and_mixed_versions_fail(self):
+        write_peer_values(self.dir, [("other", 0.0)])
+        self.assertIn("no such value", self.check()[1]["note"])
+        write_peer_values(self.dir, [(self.q, math.nan)])
+        self.assertIn("not finite", self.check()[1]["note"])
+        write_peer_values(self.dir, [(self.q, 0.0)], versions="abc123 def456")
+        out = self.check()[1]
+        self.assertEqual(out["status"], "FAIL")
+        self.assertIn("different code versions", out["note"])
+
+    def test_a_peer_row_checked_in_quick_mode_is_malformed(self):
+        self.assertEqual(check.row_problems(peer_row()), [])
+        self.assertTrue(any("quick must be no" in p for p in check.row_problems(peer_row(quick=""))))
+        self.assertTrue(any("belong to discrepancy rows" in p for p in check.row_problems(peer_row(kind="open"))))
 
 
 def csv_line(fields):

@@ -13,7 +13,8 @@ Every scene is a module tools/peers/scene_<name>.py (SCENES below, in this order
                             functions (--action measure)
   compare(rows) -> [row]    the rows of compare.csv (COMPARE_COLUMNS) from all its runs rows
 A case is done when <out>/<NAME>/<case>/runs.csv exists (written last): a rerun of make peers skips it and reads
-that file (--force reruns it), so an interrupted make peers resumes. Writes <out>/<NAME>.csv per scene run and
+that file (--force reruns it), so an interrupted make peers resumes; --cases runs only the cases it names, and the
+tables hold every case that is done. Writes <out>/<NAME>.csv per scene run and
 <out>/compare.csv (every scene present in <out>: published | ours | peer | theory with the differences, and the
 speed per force evaluation).
 Usage: run_peers.py --build BUILD --out DIR [--quick] [--threads N] [--scenes a,b] [--cases SUBSTRING] [--force]
@@ -38,7 +39,7 @@ SCENES = ["plate", "rings", "slab", "tl"]
 COMPARE_COLUMNS = ["scene", "case", "quantity", "dp", "published", "theory", "ours", "code", "variant", "peer",
                    "peer_over_ours", "ours_over_theory", "peer_over_theory", "ours_particle_steps_per_s",
                    "peer_particle_steps_per_s", "ours_force_evals_per_step", "peer_force_evals_per_step",
-                   "ours_over_peer_per_force_eval", "note"]
+                   "ours_over_peer_per_force_eval", "ours_version", "peer_version", "note"]
 
 
 def fail(msg):
@@ -106,13 +107,14 @@ def run_scene(ctx, mod, args):
     rows = []
     for case in mod.cases(ctx.quick):
         name = mod.case_name(case)
-        if args.cases and args.cases not in name:
-            continue
         d = os.path.join(ctx.out, mod.NAME, name)
         done = os.path.join(d, "runs.csv")
-        if os.path.exists(done) and not args.force:
+        selected = not args.cases or args.cases in name
+        if os.path.exists(done) and not (args.force and selected):
             print(f"run_peers: {mod.NAME}/{name} done before (its runs.csv; --force reruns it)")
             rows += peer_io.read_table(done)
+            continue
+        if not selected:  # not run now; the tables hold the cases that are done
             continue
         os.makedirs(d, exist_ok=True)
         case_rows = mod.run_case(ctx, case, d)
@@ -155,6 +157,29 @@ def main():
             compare += peer_io.read_table(p)
     write(os.path.join(ctx.out, "compare.csv"), compare, COMPARE_COLUMNS, "peers: ours against each peer, every scene")
     print(f"run_peers: {os.path.join(ctx.out, 'compare.csv')} ({len(compare)} rows)")
+    write_values(ctx.out, compare)
+
+
+def check_name(r):
+    """The quantity a reference row of kind peer names: <code>_<variant>_over_ours_<quantity>_dp<dp>."""
+    return f"{r['code']}_{r['variant']}_over_ours_{r['quantity']}_dp{num(r['dp']):g}"
+
+
+def write_values(out, compare):
+    """<out>/values_peers.csv (quantity,value,note): peer / ours - 1 of every compare row, the values that
+    reference rows of expect = peer check (reference/check.py); its header names the code versions of ours."""
+    versions = sorted({r["ours_version"] for r in compare if r.get("ours_version")})
+    path = os.path.join(out, "values_peers.csv")
+    tmp = path + ".tmp"
+    with open(tmp, "w", newline="") as f:
+        peer_io.write_header(f, {"written_by": "tools/peers/run_peers.py", "date": time.strftime("%Y-%m-%d %H:%M:%S"),
+                                 "ours_code_versions": " ".join(versions)})
+        w = csv.writer(f)
+        w.writerow(["quantity", "value", "note"])
+        for r in compare:
+            w.writerow([check_name(r), r["peer_over_ours"], f"{r['code']} {r['peer_version']} ({r['variant']}) / ours - 1, "
+                        f"{r['scene']} case {r['case']}"])
+    os.replace(tmp, path)
 
 
 if __name__ == "__main__":

@@ -10,7 +10,7 @@ the same spacing. The variants:
   walls         PySPH's own example clamp (held particles a wall array with sigma = 0)
 The cases: Table 1's three V_f = 0.01 rows and its V_f = 0.05, mu = 0.6 row at the paper's n = 20 (dp = 0.1),
 Table 2's three V_f = 0.01 rows and its two open mu = 0.6 rows at the paper's dp = 0.1 (n = 10), and the
-convergence of one row (Fig 4's plate, H = 2, V_f = 0.01, mu = 0.22) over n = 5, 10, 20.
+convergence of Table 1's V_f = 0.01 rows over n = 5, 10, 20 (dp = 0.4, 0.2, 0.1).
 """
 import os
 
@@ -45,7 +45,7 @@ def cases(quick):
     t1.append((2.0, 0.05, 0.6, 0.1, FULL[:2]))
     t2 = [(1.0, 0.01, mu, 0.1, FULL[:2]) for mu in (0.22, 0.3, 0.6)]
     t2 += [(1.0, Vf, 0.6, 0.1, FULL[:2]) for Vf in (0.03, 0.05)]
-    conv = [(2.0, 0.01, 0.22, dp, FULL[:2]) for dp in (0.4, 0.2)]
+    conv = [(2.0, 0.01, mu, dp, FULL[:2]) for mu in (0.22, 0.3, 0.6) for dp in (0.4, 0.2)]
     return conv + t1 + t2
 
 
@@ -123,7 +123,8 @@ def compare(rows):
                         ours_particle_steps_per_s=o["particle_steps_per_s"],
                         peer_particle_steps_per_s=r["particle_steps_per_s"],
                         ours_force_evals_per_step=o["force_evals_per_step"],
-                        peer_force_evals_per_step=r["force_evals_per_step"],
+                        peer_force_evals_per_step=r["force_evals_per_step"], ours_version=o["version"],
+                        peer_version=r["version"],
                         ours_over_peer_per_force_eval=speed / peer_speed if peer_speed > 0 else float("nan"),
                         note="period from the tip's first zero crossing, T = 2 t_1, by our finder for both"))
     return out
