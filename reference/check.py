@@ -36,8 +36,9 @@ expect:   match        out of tolerance is a FAIL
                        differs between the two implementations; out of tolerance is a FAIL (our implementation has
                        drifted from the independent one). Peer rows are checked only when that file is present
                        (make peers takes hours; make figures does not run it): otherwise they are skipped and the
-                       summary names how many; a peers run whose rows of ours come from more than one code version
-                       FAILs them (stale results mixed with new ones).
+                       summary names how many. Each value is a ratio within one case (ours and the peer on the same
+                       layout), so cases of different code versions do not mix in a value; the row's note names the
+                       code version of ours that it judges.
 quick:    no = not checked in --quick mode (the quick run cannot resolve it); anything else = checked.
 settings  (optional column) parameters a row accepts set on the command line, separated by spaces.
 kind, own_band  (columns a file needs only when it has discrepancy rows) see expect.
@@ -275,27 +276,25 @@ PEER_VALUES = os.path.join("peers", "values_peers.csv")
 
 
 def load_peer_values(results_dir):
-    """({quantity: value}, why the peer rows cannot be checked or None) from <results>/peers/values_peers.csv;
-    (None, None) when there is no such file (the peer rows are then skipped)."""
+    """({quantity: (value, code version of ours)}, why the peer rows cannot be checked or None) from
+    <results>/peers/values_peers.csv; (None, None) when there is no such file (the peer rows are then skipped)."""
     path = os.path.join(results_dir, PEER_VALUES)
     if not os.path.exists(path):
         return None, None
-    versions = read_header(path).get("ours_code_versions", "").split()
     try:
-        df = pd.read_csv(path, comment="#", dtype={"quantity": str, "note": str}, keep_default_na=False)
-        if not {"quantity", "value"} <= set(df.columns):
-            raise ValueError("no quantity,value header")
-        values = {r["quantity"]: float(r["value"]) if r["value"] != "" else math.nan for _, r in df.iterrows()}
+        df = pd.read_csv(path, comment="#", dtype=str, keep_default_na=False)
+        if not {"quantity", "value", "ours_code_version"} <= set(df.columns):
+            raise ValueError("no quantity,value,ours_code_version header")
+        values = {r["quantity"]: (float(r["value"]) if r["value"] != "" else math.nan, r["ours_code_version"])
+                  for _, r in df.iterrows()}
     except (pd.errors.ParserError, pd.errors.EmptyDataError, ValueError) as e:
         return {}, f"{PEER_VALUES} unreadable ({e})"
-    if len(versions) > 1:
-        return values, f"{PEER_VALUES}: our runs of the peers' cases come from different code versions ({', '.join(versions)}): rerun make peers"
     return values, None
 
 
 def check_peer_row(row, peer_values, why_not):
     q, published, tol, compare = row["quantity"], float(row["published"]), float(row["tolerance"] or 0), row["compare"]
-    reproduced = peer_values.get(q)
+    reproduced, version = peer_values.get(q, (None, ""))
     out = {"target": row["target"], "quantity": q, "published": row["published"], "kind": "peer",
            "reproduced": "" if reproduced is None else f"{reproduced:.6g}",
            "tolerance": describe_tolerance(compare, tol), "source": row["source"]}
@@ -307,7 +306,7 @@ def check_peer_row(row, peer_values, why_not):
         return {**out, "status": "FAIL", "note": "the peer's or our value is not finite"}
     ok = within(compare, reproduced, published, tol)
     note = row["why_tolerance"] if ok else f"out of tolerance: our implementation and the peer's differ; {row['why_tolerance']}"
-    return {**out, "status": "PASS" if ok else "FAIL", "note": note}
+    return {**out, "status": "PASS" if ok else "FAIL", "note": f"{note} [ours at {version}]"}
 
 
 def load_values(results_dir):

@@ -2,7 +2,7 @@
 """reference/check.py fails or refuses what it must: a NaN, a missing values file, a missing row, a parameter
 set on the command line that nothing names, a stale code version, a --quick run checked as a full one,
 results that do not record their settings, and a run that did not complete (no completion record); a peer row
-(ours against an independent code) out of tolerance, missing, not finite or of mixed versions; and passes the same values when nothing is wrong (so that each
+(ours against an independent code) out of tolerance, missing, not finite or unreadable; and passes the same values when nothing is wrong (so that each
 failure below is the one it names, not a broken fixture). A malformed reference file (a missing column, a
 duplicated row, a non-numeric tolerance, an unknown compare mode) stops it, naming file and line.
 
@@ -233,20 +233,20 @@ def peer_row(**kw):
     return row
 
 
-def write_peer_values(folder, rows, versions="abc123"):
+def write_peer_values(folder, rows, version="abc123"):
     os.makedirs(os.path.join(folder, "peers"), exist_ok=True)
     with open(os.path.join(folder, "peers", "values_peers.csv"), "w", newline="") as f:
-        f.write(f"# written_by = fixture\n# ours_code_versions = {versions}\n")
+        f.write("# written_by = fixture\n")
         w = csv.writer(f)
-        w.writerow(["quantity", "value", "note"])
+        w.writerow(["quantity", "value", "ours_code_version", "note"])
         for q, v in rows:
-            w.writerow([q, repr(v), "fixture"])
+            w.writerow([q, repr(v), version, "fixture"])
 
 
 class PeerRows(unittest.TestCase):
     """A peer row (ours against an independent code, make peers) is checked against results/peers/values_peers.csv
-    when it is present: within its tolerance PASS, out of it, missing, not finite or of mixed code versions FAIL;
-    without the file it is skipped, never counted as a pass."""
+    when it is present: within its tolerance PASS, out of it, missing or not finite FAIL, an unreadable file FAILs
+    every row; without the file it is skipped, never counted as a pass; the note names the code version of ours."""
 
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
@@ -268,15 +268,20 @@ class PeerRows(unittest.TestCase):
             write_peer_values(self.dir, [(self.q, value)])
             self.assertEqual(self.check()[1]["status"], status, value)
 
-    def test_missing_nonfinite_and_mixed_versions_fail(self):
+    def test_missing_nonfinite_and_unreadable_fail(self):
         write_peer_values(self.dir, [("other", 0.0)])
         self.assertIn("no such value", self.check()[1]["note"])
         write_peer_values(self.dir, [(self.q, math.nan)])
         self.assertIn("not finite", self.check()[1]["note"])
-        write_peer_values(self.dir, [(self.q, 0.0)], versions="abc123 def456")
+        write_peer_values(self.dir, [(self.q, 0.0)], version="def456")
+        out = self.check()[1]
+        self.assertEqual(out["status"], "PASS")
+        self.assertIn("ours at def456", out["note"])
+        with open(os.path.join(self.dir, "peers", "values_peers.csv"), "w") as f:
+            f.write("quantity,value\n" + self.q + ",0\n")  # an older file without the version column
         out = self.check()[1]
         self.assertEqual(out["status"], "FAIL")
-        self.assertIn("different code versions", out["note"])
+        self.assertIn("unreadable", out["note"])
 
     def test_a_peer_row_checked_in_quick_mode_is_malformed(self):
         self.assertEqual(check.row_problems(peer_row()), [])

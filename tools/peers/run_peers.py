@@ -166,19 +166,17 @@ def check_name(r):
 
 
 def write_values(out, compare):
-    """<out>/values_peers.csv (quantity,value,note): peer / ours - 1 of every compare row, the values that
-    reference rows of expect = peer check (reference/check.py); its header names the code versions of ours."""
-    versions = sorted({r["ours_version"] for r in compare if r.get("ours_version")})
+    """<out>/values_peers.csv (quantity,value,ours_code_version,note): peer / ours - 1 of every compare row, the
+    values that reference rows of expect = peer check (reference/check.py)."""
     path = os.path.join(out, "values_peers.csv")
     tmp = path + ".tmp"
     with open(tmp, "w", newline="") as f:
-        peer_io.write_header(f, {"written_by": "tools/peers/run_peers.py", "date": time.strftime("%Y-%m-%d %H:%M:%S"),
-                                 "ours_code_versions": " ".join(versions)})
+        peer_io.write_header(f, {"written_by": "tools/peers/run_peers.py", "date": time.strftime("%Y-%m-%d %H:%M:%S")})
         w = csv.writer(f)
-        w.writerow(["quantity", "value", "note"])
+        w.writerow(["quantity", "value", "ours_code_version", "note"])
         for r in compare:
-            w.writerow([check_name(r), r["peer_over_ours"], f"{r['code']} {r['peer_version']} ({r['variant']}) / ours - 1, "
-                        f"{r['scene']} case {r['case']}"])
+            w.writerow([check_name(r), r["peer_over_ours"], r.get("ours_version", ""),
+                        f"{r['code']} {r.get('peer_version', '')} ({r['variant']}) / ours - 1, {r['scene']} case {r['case']}"])
     os.replace(tmp, path)
 
 
