@@ -100,33 +100,36 @@ class PeerRings(Application):
             self.writer = peer_io.FrameWriter(self.frames_path, [], {
                 "peer": "pysph", "code_version": self.version(), "continuity": self.continuity,
                 "eps": self.settings["eps_artificial"], "dt": repr(self.settings["dt"])})
-            self.sample(solver)
+            self.sample(solver.t)
 
     @staticmethod
     def version():
         import pysph
         return pysph.__version__
 
-    def sample(self, solver):
+    def sample(self, t):
         pa = self.particles[0]
         self.writer.ids = [int(i) for i in pa.layout_id]
-        self.writer.frame(solver.t, pa.x, pa.y, pa.u, pa.v)
+        self.writer.frame(t, pa.x, pa.y, pa.u, pa.v)
         self.frame_count += 1
         self.next_sample += self.settings["sample_dt"]
         contact = self.in_contact()
         if contact and self.contact_start < 0:
-            self.contact_start = solver.t
+            self.contact_start = t
         if not contact and self.contact_start >= 0 and self.contact_end < 0:
-            self.contact_end = solver.t
+            self.contact_end = t
 
     def post_step(self, solver):
-        # Our sph::Cadence: a sample when t has reached the next multiple of sample_dt (to round-off).
-        if solver.t < self.next_sample - 1e-12:
+        # PySPH calls this after the integrator's step and before it adds dt to solver.t: the particles are at
+        # t = solver.t + solver.dt (the sum our solver forms, t += dt). Our sph::Cadence: a sample when t has reached
+        # the next multiple of sample_dt (to round-off).
+        t = solver.t + solver.dt
+        if t < self.next_sample - 1e-12:
             return
-        self.sample(solver)
+        self.sample(t)
         after = self.settings["run_after_contact"]
-        if self.contact_end >= 0 and after >= 0 and solver.t >= self.contact_end + after:
-            solver.set_final_time(solver.t)
+        if self.contact_end >= 0 and after >= 0 and t >= self.contact_end + after:
+            solver.set_final_time(t)  # the loop ends once solver.t has become t
 
     def finish(self, steps):
         wall = time.time() - self.t_start
