@@ -107,6 +107,7 @@ def main():
     ap.add_argument("--max-steps", type=int, default=-1, help="stop after this many steps (quick runs)")
     ap.add_argument("--lmp", default="lmp")
     a = ap.parse_args()
+    a.work, a.frames = os.path.abspath(a.work), os.path.abspath(a.frames)  # lmp runs in the repository root
     s = peer_io.settings(a.layout)
     layout = peer_io.read_table(os.path.join(a.layout, "layout.csv"))
     if len(layout) != int(s["particles"]):
