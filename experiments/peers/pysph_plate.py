@@ -30,94 +30,11 @@ import numpy as np
 
 from pysph.base.kernels import CubicSpline
 from pysph.solver.application import Application
-from pysph.sph.equation import Equation, Group
-from pysph.sph.solid_mech.basic import ElasticSolidsScheme, get_particle_array_elastic_dynamics
+from pysph.sph.solid_mech.basic import get_particle_array_elastic_dynamics
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import peer_io  # noqa: E402
-
-
-class HeldParticles(Equation):
-    """The clamp of our GraySolver (Motion::Fixed): a held particle neither accelerates nor moves."""
-
-    def post_loop(self, d_idx, d_fixed, d_au, d_av, d_aw, d_ax, d_ay, d_az):
-        if d_fixed[d_idx] > 0.5:
-            d_au[d_idx] = 0.0
-            d_av[d_idx] = 0.0
-            d_aw[d_idx] = 0.0
-            d_ax[d_idx] = 0.0
-            d_ay[d_idx] = 0.0
-            d_az[d_idx] = 0.0
-
-
-class XSPHVelocity(Equation):
-    """Gray 2001 (3.6): vhat_a = v_a + eps sum_b m_b (v_b - v_a) W_ab / rho_ab, rho_ab = (rho_a + rho_b) / 2."""
-
-    def __init__(self, dest, sources, eps):
-        self.eps = eps
-        super().__init__(dest, sources)
-
-    def initialize(self, d_idx, d_vhx, d_vhy):
-        d_vhx[d_idx] = 0.0
-        d_vhy[d_idx] = 0.0
-
-    def loop(self, d_idx, s_idx, s_m, d_vhx, d_vhy, WIJ, RHOIJ1, VIJ):
-        tmp = -self.eps * s_m[s_idx] * WIJ * RHOIJ1
-        d_vhx[d_idx] += tmp * VIJ[0]
-        d_vhy[d_idx] += tmp * VIJ[1]
-
-    def post_loop(self, d_idx, d_vhx, d_vhy, d_u, d_v):
-        d_vhx[d_idx] += d_u[d_idx]
-        d_vhy[d_idx] += d_v[d_idx]
-
-
-class VelocityGradient2DXSPH(Equation):
-    """(3.10) of the XSPH velocity: d vhat^i / d x^j = sum_b (m_b / rho_b) (vhat_b - vhat_a)^i d_j W_ab."""
-
-    def initialize(self, d_idx, d_v00, d_v01, d_v10, d_v11):
-        d_v00[d_idx] = 0.0
-        d_v01[d_idx] = 0.0
-        d_v10[d_idx] = 0.0
-        d_v11[d_idx] = 0.0
-
-    def loop(self, d_idx, s_idx, s_m, s_rho, d_vhx, d_vhy, s_vhx, s_vhy, d_v00, d_v01, d_v10, d_v11, DWIJ):
-        tmp = s_m[s_idx] / s_rho[s_idx]
-        dx = s_vhx[s_idx] - d_vhx[d_idx]
-        dy = s_vhy[s_idx] - d_vhy[d_idx]
-        d_v00[d_idx] += tmp * dx * DWIJ[0]
-        d_v01[d_idx] += tmp * dx * DWIJ[1]
-        d_v10[d_idx] += tmp * dy * DWIJ[0]
-        d_v11[d_idx] += tmp * dy * DWIJ[1]
-
-
-class ContinuityXSPH(Equation):
-    """(3.8) of the XSPH velocity: d rho_a / dt = sum_b m_b (vhat_a - vhat_b) . grad_a W_ab."""
-
-    def initialize(self, d_idx, d_arho):
-        d_arho[d_idx] = 0.0
-
-    def loop(self, d_idx, s_idx, s_m, d_vhx, d_vhy, s_vhx, s_vhy, d_arho, DWIJ):
-        d_arho[d_idx] += s_m[s_idx] * ((d_vhx[d_idx] - s_vhx[s_idx]) * DWIJ[0] + (d_vhy[d_idx] - s_vhy[s_idx]) * DWIJ[1])
-
-
-class HeldScheme(ElasticSolidsScheme):
-    """ElasticSolidsScheme's equations with HeldParticles last in its second group; with continuity = "xsph" the
-    XSPH velocity is summed in a group of its own first, and continuity and the velocity gradient take it."""
-
-    continuity = "v"
-
-    def get_equations(self):
-        eqs = super().get_equations()
-        eqs[-1].equations.append(HeldParticles(dest="plate", sources=None))
-        if self.continuity == "xsph":
-            sources = self.solids + self.elastic_solids
-            swap = {"VelocityGradient2D": VelocityGradient2DXSPH, "ContinuityEquation": ContinuityXSPH}
-            for g in eqs:
-                g.equations = [swap[type(e).__name__](dest=e.dest, sources=e.sources) if type(e).__name__ in swap else e
-                               for e in g.equations]
-            eqs.insert(0, Group(equations=[XSPHVelocity(dest=d, sources=sources, eps=self.xsph_eps)
-                                           for d in self.elastic_solids]))
-        return eqs
+from pysph_gray import HeldScheme, add_xsph_properties  # noqa: E402
 
 
 class PeerPlate(Application):
@@ -147,8 +64,7 @@ class PeerPlate(Application):
             h=np.full(keep.sum(), s["h"]), constants=consts)
         plate.add_property("fixed")
         plate.fixed[:] = fixed[keep]
-        for name in ("vhx", "vhy"):
-            plate.add_property(name)
+        add_xsph_properties(plate)
         self.tip = int(np.flatnonzero(tip[keep] > 0.5)[0])
         self.y0 = plate.y[self.tip]
         arrays = [plate]
@@ -157,15 +73,16 @@ class PeerPlate(Application):
             wall = get_particle_array_elastic_dynamics(
                 name="wall", x=x[w], y=y[w], m=m[w], rho=rho[w], h=np.full(w.sum(), s["h"]),
                 constants=dict(E=s["E"], nu=s["nu"], rho_ref=s["rho0"]))
-            for name in ("vhx", "vhy"):
-                wall.add_property(name)  # zero: the walls do not move
+            add_xsph_properties(wall)  # zero: the walls do not move
             arrays.append(wall)
         if abs(plate.c0_ref[0] - s["c0"]) > 1e-12 * s["c0"]:
             sys.exit(f"pysph_plate: PySPH's sound speed {plate.c0_ref[0]} from E, nu is not our c0 {s['c0']}")
         return arrays
 
     def create_scheme(self):
-        return HeldScheme(elastic_solids=["plate"], solids=[], dim=2)
+        scheme = HeldScheme(elastic_solids=["plate"], solids=[], dim=2)
+        scheme.held = ["plate"]
+        return scheme
 
     def configure_scheme(self):
         self.scheme.continuity = self.continuity

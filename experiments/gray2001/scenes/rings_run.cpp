@@ -4,12 +4,22 @@
 #include <cmath>
 #include <limits>
 
-#include "core/diagnostics.hpp"
-#include "core/fragments.hpp"
+#include "core/kernels.hpp"
 #include "core/run_loop.hpp"
 #include "frame/progress.hpp"
 
 namespace scenes {
+
+RingsProbeSpec rings_probe_spec(const RingsRunSpec& s, const Rings& rings) {
+  RingsProbeSpec p;
+  p.first_right = rings.first_right;
+  p.box = rings.body.box;
+  p.dp = rings.body.dp;
+  p.support = sph::CubicSpline::support() * (s.scheme.h_over_dp * rings.body.dp);  // the solver's (gray_solver.cpp)
+  p.fracture_link = s.fracture_link;
+  p.min_fragment = s.min_fragment;
+  return p;
+}
 
 RingsRunResult run_rings(const RingsRunSpec& s,
                          const std::function<void(const sph::GraySolver&, const sph::ElasticBody&)>& on_sample,
@@ -22,71 +32,31 @@ RingsRunResult run_rings(const RingsRunSpec& s,
   RingsRunResult r;
   r.dt = solver.time_step(s.rings.speed);
   r.particles = body.size();
-  const std::size_t n = body.size(), nl = rings.first_right;
-  std::vector<bool> in_left(n, false), in_right(n, false);
-  for (std::size_t a = 0; a < n; ++a) (a < nl ? in_left : in_right)[a] = true;
-  double mass_l = 0, mass_r = 0;
-  for (std::size_t a = 0; a < n; ++a) (a < nl ? mass_l : mass_r) += body.m[a];
-
-  // Pieces of one ring: its fragments, its stray particles, and the label of its largest piece.
-  struct Pieces { sph::Fragments f; std::size_t main = 0, fragments = 0, stray = 0; };
-  auto pieces_of = [&](const std::vector<bool>& ring) {
-    Pieces p{sph::find_fragments(body.x, body.box, s.fracture_link * s.rings.dp, ring)};
-    for (std::size_t k = 0; k < p.f.sizes.size(); ++k) {
-      if (p.f.sizes[k] > p.f.sizes[p.main]) p.main = k;
-      if (p.f.sizes[k] >= s.min_fragment) ++p.fragments;
-      else p.stray += p.f.sizes[k];
-    }
-    return p;
-  };
+  const RingsProbe probe(rings_probe_spec(s, rings), body.m);
+  RingsCollision collision;
   auto sample = [&] {
-    const Pieces L = pieces_of(in_left), R = pieces_of(in_right);
-    sph::Vec2 pl = sph::Vec2::Zero(), pr = sph::Vec2::Zero(), xl = sph::Vec2::Zero(), xr = sph::Vec2::Zero();
-    for (std::size_t a = 0; a < n; ++a) {
-      (a < nl ? pl : pr) += body.m[a] * body.v[a];
-      (a < nl ? xl : xr) += body.m[a] * body.x[a];
-    }
-    const sph::Vec2 vl = pl / mass_l, vr = pr / mass_r;
-    // Contact from the pair list: a pair of the two main pieces with a non-zero kernel interacts.
-    const auto& pairs = solver.pairs();
-    double dmin = std::numeric_limits<double>::infinity();
-    for (std::size_t a = 0; a < nl; ++a) {
-      if (L.f.label[a] != L.main) continue;
-      for (std::uint32_t k = pairs.first(a); k < pairs.last(a); ++k) {
-        const std::uint32_t b = pairs.b[k];
-        if (b >= nl && R.f.label[b] == R.main && pairs.W[k] > 0) dmin = std::min(dmin, pairs.dx[k].norm());
-      }
-    }
-    const int contact = std::isfinite(dmin) ? 1 : 0;
-    const double share = std::min(static_cast<double>(L.f.sizes[L.main]) / nl, static_cast<double>(R.f.sizes[R.main]) / (n - nl));
-    r.trace.push_back({solver.time(), sph::kinetic_energy(solver), 0.5 * (mass_l * vl.squaredNorm() + mass_r * vr.squaredNorm()),
-                       solver.elastic_energy(), vl.x(), vr.x(), xl.x() / mass_l, xr.x() / mass_r, dmin, contact, L.fragments,
-                       R.fragments, L.stray + R.stray, share});
-    r.max_fragments = std::max({r.max_fragments, L.fragments, R.fragments});
-    r.max_stray = std::max(r.max_stray, L.stray + R.stray);
-    r.min_main_share = std::min(r.min_main_share, share);
-    if (std::max(L.fragments, R.fragments) > 1 && r.fracture_time < 0) r.fracture_time = solver.time();
-    if (contact && r.contact_start < 0) r.contact_start = solver.time();
-    if (!contact && r.contact_start >= 0 && r.contact_end < 0) r.contact_end = solver.time();
+    r.trace.push_back(probe(solver.time(), body.x, body.v, solver.elastic_energy()));
+    collision.add(r.trace.back());
     if (on_sample) on_sample(solver, body);
   };
   sph::Progress progress(progress_label, s.t_max);
-  auto separated_long_enough = [&] {
-    return r.contact_end >= 0 && s.run_after_contact >= 0 && solver.time() >= r.contact_end + s.run_after_contact;
-  };
   sph::Cadence samples(s.sample_dt);
   auto observe = [&](const sph::GraySolver& sv) {
     if (!samples.due(sv.time())) return false;
     sample();
-    return sv.steps() > 0 && separated_long_enough();
+    return sv.steps() > 0 && collision.separated_for(sv.time(), s.run_after_contact);
   };
   r.blow_up = sph::run(solver, {r.dt, -1, s.t_max}, observe,
                        [&](const sph::GraySolver& sv) { progress.update(sv.time(), sv.steps()); }).blow_up;
-  if (r.contact_end >= 0 && r.blow_up.empty()) {
-    const auto& last = r.trace.back();
-    r.rebound_speed = 0.5 * (last.v_right - last.v_left);
-    r.restitution = r.rebound_speed / s.rings.speed;
-  }
+  collision.finish(r.trace.back(), s.rings.speed, !r.blow_up.empty());
+  r.contact_start = collision.contact_start;
+  r.contact_end = collision.contact_end;
+  r.rebound_speed = collision.rebound_speed;
+  r.restitution = collision.restitution;
+  r.fracture_time = collision.fracture_time;
+  r.max_fragments = collision.max_fragments;
+  r.max_stray = collision.max_stray;
+  r.min_main_share = collision.min_main_share;
   r.steps = solver.steps();
   r.wall_s = progress.elapsed_s();
   return r;

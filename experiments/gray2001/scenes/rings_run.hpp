@@ -1,11 +1,8 @@
-// Running the colliding rings of Gray, Monaghan & Swift 2001 Section 7.2 and measuring the collision:
-// the pieces of each ring (connected components at the fracture link, every sample), contact (a pair of
-// particles of the two rings' main pieces inside the kernel support, read from the solver's pair list: the
+// Running the colliding rings of Gray, Monaghan & Swift 2001 Section 7.2 and measuring the collision at every
+// sample from the particle state (rings_measure.hpp, which a peer's frames are measured with too): the pieces
+// of each ring, contact (a pair of particles of the two rings' main pieces inside the kernel support: the
 // rings touch through the ordinary SPH sums, nothing else), the rings' centre-of-mass velocities (rebound
 // speed), and the kinetic and elastic energies.
-// Fragments: SPH has no contact algorithm, so a few surface particles of one ring can stay stuck to the
-// other after the bounce; they form tiny "pieces" of their ring. A FRAGMENT is therefore a piece of at
-// least `min_fragment` particles (CHOSEN 10); the smaller ones are counted as stray particles.
 #pragma once
 
 #include <functional>
@@ -14,6 +11,7 @@
 
 #include "updated_lagrangian/gray_solver.hpp"
 #include "gray2001/scenes/rings.hpp"
+#include "gray2001/scenes/rings_measure.hpp"
 
 namespace scenes {
 
@@ -25,19 +23,9 @@ struct RingsRunSpec {
   double run_after_contact = 60;   ///< and this long after the rings have separated (< 0: to t_max)
   double sample_dt = 1.0;
   double fracture_link = 1.5;      ///< pieces are connected components at this link distance / dp
-  std::size_t min_fragment = 10;   ///< smallest piece counted as a fragment (see above)
+  std::size_t min_fragment = 10;   ///< smallest piece counted as a fragment (rings_measure.hpp)
 };
 
-struct RingsSample {
-  double t, ke, ke_com, ee;        ///< kinetic (total, of the rings' centre-of-mass motion), elastic energy
-  double v_left, v_right;          ///< x velocity of each ring's centre of mass
-  double x_left, x_right;          ///< x of each ring's centre of mass
-  double min_distance;             ///< closest pair of particles of different rings (inf beyond the support)
-  int contact;                     ///< 1 while the main pieces of the two rings interact
-  std::size_t fragments_left, fragments_right;  ///< pieces of >= min_fragment particles
-  std::size_t stray;               ///< particles outside both rings' fragments (torn off or stuck to the other)
-  double main_share;               ///< smaller of the two rings' largest piece / ring size
-};
 
 struct RingsRunResult {
   std::vector<RingsSample> trace;
@@ -53,6 +41,9 @@ struct RingsRunResult {
   double min_main_share = 1;       ///< smallest main-piece share of either ring at any sample
   std::string blow_up;
 };
+
+/// What the run's samples are measured with: the run's link, minimum fragment, and the solver's support 2h.
+RingsProbeSpec rings_probe_spec(const RingsRunSpec& s, const Rings& rings);
 
 /// Runs the collision; `on_sample(solver, body)` is called at every sample.
 RingsRunResult run_rings(const RingsRunSpec& s,
