@@ -138,7 +138,8 @@ def compare(rows):
                             ours_particle_steps_per_s=o["particle_steps_per_s"],
                             peer_particle_steps_per_s=r["particle_steps_per_s"],
                             ours_force_evals_per_step=o["force_evals_per_step"],
-                            peer_force_evals_per_step=r["force_evals_per_step"],
+                            peer_force_evals_per_step=r["force_evals_per_step"], ours_version=o["version"],
+                            peer_version=r["version"],
                             ours_over_peer_per_force_eval=speed / peer_speed if peer_speed > 0 else math.nan,
                             note="the paper gives claims, not numbers (reference/G-fig6.csv); both measured by "
                                  "rings_measure.hpp (contact: main pieces within 2h; fragments >= 10 particles at 1.5 dp)"))
