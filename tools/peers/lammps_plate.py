@@ -2,8 +2,8 @@
 
 run(ctx, layout_dir, case_dir, variant) runs one variant on the layout that build/bin/peer_plate --action layout
 wrote into layout_dir (layout.csv, settings.csv) and returns
-  dict(trace=<t,y_tip csv for peer_plate --action measure>, particles, steps, wall_s, force_evals_per_step=1, dt,
-       version, variant, ...the settings it used)
+  dict(trace=<t,y_tip csv for peer_plate --action measure>, particles, steps, wall_s, cpu_s, force_evals_per_step=1,
+       dt (MACHDYN's mean step), version, variant, hg, art_stress, dt_safety)
 Variants (VARIANTS):
   tlsph          pair smd/tlsph (total Lagrangian, corrected gradients), hourglass control 10 (MACHDYN's examples)
   ulsph          pair smd/ulsph as tools/peers/lammps_rings.in, with its *ARTIFICIAL_STRESS 0.3 (our eps)
@@ -11,11 +11,13 @@ Variants (VARIANTS):
 The inputs: tools/peers/lammps_plate_{tlsph,ulsph}.in (which include lammps_plate_setup.in and lammps_plate_run.in);
 every setting and its source is stated there. What is ours: the particles (positions, masses, densities, the
 held ones), the initial velocity (the cantilever mode), K = 1 and mu (through our E, nu), h (MACHDYN radius = h,
-support 2 h), alpha and beta (Q1, Q2), the time step (fixed: MACHDYN's timestep without fix smd/adjust_dt), the
-sampling (every sample_dt) and the stop (the tip's stop_after_crossings-th zero crossing, or t_end). What is
-MACHDYN's: the kernel (spiky), the integrator (velocity Verlet, one force evaluation per step), the stress update
-(hypo-elastic rates), and for tlsph the total-Lagrangian gradients and hourglass control, for ulsph its own
-artificial stress; neither has XSPH.
+support 2 h), alpha and beta (Q1, Q2), the sampling (every sample_dt) and the stop (the tip's
+stop_after_crossings-th zero crossing, or t_end). What is MACHDYN's: the kernel (spiky), the integrator (velocity
+Verlet, one force evaluation per step), its time step (fix smd/adjust_dt 0.1: ours is unstable in both pairs, see
+DT_SAFETY), the stress update (hypo-elastic rates), the viscosity on receding pairs too, and for tlsph the
+total-Lagrangian corrected gradients and hourglass control, for ulsph its own artificial stress; neither has XSPH.
+run(..., max_steps=N) stops after N steps (quick mode), overrides={name: value} replaces -var settings of the variant
+(diagnostics), dump_every=N writes every particle every N steps.
 Bad input (a missing layout, an unknown variant, a run that stops before its first sample) raises with one line.
 """
 import math
@@ -28,9 +30,11 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "experim
 import peer_io  # noqa: E402
 
 # The time step of every variant: MACHDYN's own, fix smd/adjust_dt 0.1 (the safety factor of all its examples):
-# at ours (cfl 0.5, 2.5 times that) smd/ulsph breaks the plate up within 200 steps at dp = 0.4 and smd/tlsph's
-# period moves by -1.0% (dt ours) and -0.8% (0.9 ours) against a plateau from 0.75 ours down (0.75, 0.5, 0.25:
-# equal to 1e-4): a bounded parasitic mode of its hourglass springs, not a smooth step error.
+# 0.1 x 2 radius / c_p = 0.3 dp / c_L, where ours is 0.5 h / (c_L + V_f) = 0.75 dp / (c_L + V_f), 2.5 times more.
+# At ours (measured at dp = 0.4, H = 2, V_f = 0.01, mu = 0.22) smd/ulsph breaks the plate up within 500 steps (at
+# half ours it holds, T as at 0.1 to 1e-4), and smd/tlsph's period is 1.0% short (0.9 ours: 0.8%) of a plateau from
+# 0.75 ours down (0.75, 0.5, 0.25 ours and adjust_dt 0.1 agree within 2e-4): a bounded parasitic mode of its
+# hourglass springs, not a smooth step error.
 DT_SAFETY = 0.1
 VARIANTS = {
     # name: (input, -var settings beyond the layout's); None: our eps_artificial
