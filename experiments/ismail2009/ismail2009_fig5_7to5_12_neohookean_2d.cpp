@@ -21,6 +21,7 @@
 #include "core/run_loop.hpp"
 #include "io/snapshot.hpp"
 #include "ismail2009/scenes/domain_2d.hpp"
+#include "ismail2009/scenes/wave_2d.hpp"
 #include "total_lagrangian/solver_2d.hpp"
 
 namespace {
@@ -51,62 +52,30 @@ int main(int argc, char** argv) {
     const sph::Lame m = sph::lame_from_young_poisson(E, nu);
     const double cL = sph::longitudinal_wave_speed(m, rho);
 
-    // ---- Figs 5.7-5.9: strain and stress waves ----------------------------------------------------------------
-    const scenes::SmoothedPulse p(p0, pulse, smooth);
+    // ---- Figs 5.7-5.9: strain and stress waves (scenes/wave_2d.hpp: the strip, its run, its measurements) ------
     auto wcsv = d.csv("waves.csv", {"case", "t", "gauge_x", "row", "T11"});
     for (const std::string kind : {"strain", "stress"}) {
-      const double Ly = (rows - 1) * ps_wave;
-      auto dom = scenes::rectangle_domain(L, Ly, 0, 1, 2, 2);
-      // Left: tensile traction T11 = +p (t = P n with n = -e1: t1 = -p); right: held; sides: u2 = 0 (strain)
-      // or free (stress), always free to slide.
-      std::vector<sph::BoundaryCondition2D> conds{
-          condition(false, [p](const Vec2&, double t) { return -p(t); }, false, zero),
-          condition(true, zero, true, zero),
-          kind == "strain" ? condition(false, zero, true, zero) : condition(false, zero, false, zero)};
-      auto cfg = scenes::make_body(dom, conds, ps_wave, h_over_ps);
-      cfg.rho = rho;
-      cfg.lame = m;
-      sph::TlSolver2D body(std::move(cfg));
-      const double dt = 0.3 * body.h() / cL, t_end = 0.13 / cL + pulse + 2e-6;
-      std::vector<double> gx{L / 3, 2 * L / 3};
-      std::vector<std::vector<int>> idx(2);
-      for (int g = 0; g < 2; ++g)
-        for (int r = 0; r < rows; ++r) idx[g].push_back(body.nearest({gx[g], r * ps_wave}));
-      std::vector<double> ts;
-      std::vector<std::vector<std::vector<double>>> T(2, std::vector<std::vector<double>>(rows));
-      double t = 0;  // the time before the step just taken: the stress refers to it
-      auto record = [&](const sph::TlSolver2D& b) {
-        if (b.steps() > 0) {
-          ts.push_back(t);
-          for (int g = 0; g < 2; ++g)
-            for (int r = 0; r < rows; ++r) {
-              T[g][r].push_back(b.cauchy(idx[g][r])(0, 0));
-              wcsv.row(kind, t, gx[g], r, T[g][r].back());
-            }
-        }
-        t = b.time();
-        return false;
-      };
-      sph::RunPlan plan{dt};
-      plan.t_end = t_end;
-      plan.whole_steps = true;
-      const auto outcome = sph::run(body, plan, record);
-      if (outcome.blew_up()) throw std::runtime_error(kind + " wave run became non-finite: " + outcome.blow_up);
-      const int mid = rows / 2;
-      auto centroid = [&](int g) {
-        const double t50 = scenes::crossing_time(ts, T[g][mid], 0.5 * p0);
-        return scenes::centroid_time(ts, T[g][mid], t50 - 0.5 * pulse, t50 + 1.5 * pulse);
-      };
-      d.value("wave_speed_" + kind, (gx[1] - gx[0]) / (centroid(1) - centroid(0)), "pulse centroids at x = 0.05, 0.1 m, mid-thickness");
-      const double t50 = scenes::crossing_time(ts, T[0][mid], 0.5 * p0), mid_t = t50 + 0.5 * pulse;
-      double spread = 0, amp = 0;
-      for (int r = 0; r < rows; ++r) {
-        const double a = scenes::window_mean(ts, T[0][r], mid_t - 0.1 * pulse, mid_t + 0.1 * pulse);
-        if (r == mid) amp = a;
-        spread = std::max(spread, std::abs(a - scenes::window_mean(ts, T[0][mid], mid_t - 0.1 * pulse, mid_t + 0.1 * pulse)));
-      }
-      d.value("plateau_over_p0_" + kind, amp / p0, "mean T11 mid-pulse at x = 0.05 m, mid-thickness / p0");
-      d.value("thickness_spread_over_p0_" + kind, spread / p0, "max over rows of |plateau - mid-row plateau| / p0");
+      scenes::Wave2DSpec spec;
+      spec.kind = kind;
+      spec.rho = rho;
+      spec.E = E;
+      spec.nu = nu;
+      spec.L = L;
+      spec.ps = ps_wave;
+      spec.h_over_ps = h_over_ps;
+      spec.p0 = p0;
+      spec.pulse = pulse;
+      spec.smooth = smooth;
+      spec.rows = rows;
+      const scenes::WaveRecord rec = scenes::run_wave_2d(spec);
+      const auto gx = spec.gauge_x();
+      for (std::size_t k = 0; k < rec.t.size(); ++k)
+        for (std::size_t g = 0; g < gx.size(); ++g)
+          for (int r = 0; r < rows; ++r) wcsv.row(kind, rec.t[k], gx[g], r, rec.T[g][r][k]);
+      const scenes::WaveMeasures w = scenes::measure_wave(spec, rec.t, rec.T);
+      d.value("wave_speed_" + kind, w.speed, "pulse centroids at x = 0.05, 0.1 m, mid-thickness");
+      d.value("plateau_over_p0_" + kind, w.plateau_over_p0, "mean T11 mid-pulse at x = 0.05 m, mid-thickness / p0");
+      d.value("thickness_spread_over_p0_" + kind, w.spread_over_p0, "max over rows of |plateau - mid-row plateau| / p0");
     }
     d.value("plate_speed_plane_strain", std::sqrt(E / (rho * (1 - nu * nu))), "sqrt(E / (rho (1 - nu^2))): free sides, eps33 = 0");
 

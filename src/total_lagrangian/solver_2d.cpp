@@ -131,6 +131,18 @@ Tensor2 TlSolver2D::smoothed_cauchy(int i) const {
   return s / w;
 }
 
+Tensor2 TlSolver2D::smoothed(int i, const std::vector<Tensor2>& field) const {
+  if (static_cast<int>(field.size()) != b_.nr) throw std::invalid_argument("TlSolver2D::smoothed: one tensor per real particle");
+  Tensor2 s = Tensor2::Zero();
+  double w = 0;
+  for (SparseMatrix::InnerIterator it(b_.m.W, i); it; ++it) {
+    if (it.col() >= b_.nr) continue;
+    s += it.value() * field[static_cast<std::size_t>(it.col())];
+    w += it.value();
+  }
+  return s / w;
+}
+
 bool TlSolver2D::finite() const {
   for (int c = 0; c < 2; ++c) if (!b_.u[c].head(b_.nr).allFinite()) return false;
   for (const auto& p : b_.P) if (!p.head(b_.nr).allFinite()) return false;

@@ -57,6 +57,9 @@ class TlSolver2D {
   /// sum_q W_iq T_q / sum_q W_iq: the 'secondary SPH approximation' of Section 2.9, which filters the
   /// particle-scale (zero-energy) modes that the plain SPH gradient cannot see.
   Tensor2 smoothed_cauchy(int i) const;
+  /// The same interpolant of any tensor field on the real particles (field[q] at real particle q): for a field
+  /// that is not this body's own, e.g. an independent code's stress on this body's particles.
+  Tensor2 smoothed(int i, const std::vector<Tensor2>& field) const;
   double h() const { return b_.radius; }
   bool finite() const;
   double build_seconds() const { return build_s_; }  ///< SPH matrices, interpolation rows, LU factorisations

@@ -53,6 +53,43 @@ sph::TlConfig2D hole_body(const HoleParams& p, const Load& load, double omega) {
 
 }  // namespace
 
+HoleTimes hole_times(const HoleParams& p) {
+  const sph::Lame m = sph::lame_from_young_poisson(p.E, p.nu);
+  HoleTimes h;
+  h.cL = sph::longitudinal_wave_speed(m, p.rho);
+  h.cT = sph::transverse_wave_speed(m, p.rho);
+  h.t_ramp = p.ramp_transits * p.a / h.cT;
+  // The slowest mode of the quarter sheet is shear-dominated (nu = 0.49): omega ~ pi c_T / (4 a). Mass-
+  // proportional damping (HoleParams::damping, 6.5 omega) brings it to rest and holds the reflection closure's
+  // edge instability (CHOSEN; the thesis's sheet 'comes to rest' without saying how).
+  h.omega = M_PI * h.cT / (4.0 * p.a);
+  h.t_end = h.t_ramp + p.settle / h.omega;
+  return h;
+}
+
+double hole_load(const HoleParams& p, const HoleTimes& times, double t) {
+  const double s = std::min(t / times.t_ramp, 1.0);
+  return p.traction * (s < 1.0 ? std::sin(0.5 * M_PI * s) * std::sin(0.5 * M_PI * s) : 1.0);
+}
+
+sph::TlConfig2D hole_config(const HoleParams& p) {
+  const HoleTimes h = hole_times(p);
+  return hole_body(p, [p, h](const Vec2&, double t) { return hole_load(p, h, t); }, h.omega);
+}
+
+HoleStress hole_stress(const HoleParams& p, const sph::TlSolver2D& body, const std::function<sph::Tensor2(int)>& T) {
+  const int n = body.n_real();
+  std::vector<sph::Tensor2> field(n);
+  for (int i = 0; i < n; ++i) field[i] = T(i);
+  const int top = body.nearest({0.0, p.R});
+  HoleStress s;
+  for (int i = 0; i < n; ++i) s.peak_sigma1 = std::max(s.peak_sigma1, max_principal(field[i]));
+  s.sigma1_hole_top = max_principal(field[top]);
+  for (int i = 0; i < n; ++i) s.smoothed_peak_sigma1 = std::max(s.smoothed_peak_sigma1, max_principal(body.smoothed(i, field)));
+  s.smoothed_sigma1_hole_top = max_principal(body.smoothed(top, field));
+  return s;
+}
+
 HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fractions,
                     const std::function<void(const sph::TlSolver2D&, double)>& snapshot) {
   if (p.n < 5) throw std::invalid_argument("run_hole: n >= 5");
@@ -64,18 +101,9 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
                    sph::run_store_dir().c_str());
       return *served;  // its wall_s is the stepping run's (the job that stepped it), as the resolution figure plots it
     }
-  const sph::Lame m = sph::lame_from_young_poisson(p.E, p.nu);
-  const double cL = sph::longitudinal_wave_speed(m, p.rho), cT = sph::transverse_wave_speed(m, p.rho);
-  const double t_ramp = p.ramp_transits * p.a / cT;
-  // The slowest mode of the quarter sheet is shear-dominated (nu = 0.49): omega ~ pi c_T / (4 a). Mass-
-  // proportional damping (HoleParams::damping, 6.5 omega) brings it to rest and holds the reflection closure's
-  // edge instability (CHOSEN; the thesis's sheet 'comes to rest' without saying how).
-  const double omega = M_PI * cT / (4.0 * p.a), t_end = t_ramp + p.settle / omega;
-  auto load = [=](const Vec2&, double t) {
-    const double s = std::min(t / t_ramp, 1.0);
-    return p.traction * (s < 1.0 ? std::sin(0.5 * M_PI * s) * std::sin(0.5 * M_PI * s) : 1.0);
-  };
-  sph::TlSolver2D body(hole_body(p, load, omega));
+  const HoleTimes times = hole_times(p);
+  const double cL = times.cL, t_ramp = times.t_ramp, omega = times.omega, t_end = times.t_end;
+  sph::TlSolver2D body(hole_config(p));
   HoleResult r;
   r.particles = body.n_real();
   r.build_s = body.build_seconds();
@@ -123,11 +151,11 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   }
   r.wall_s = outcome.wall_s;
   if (r.finite) {
-    for (int i = 0; i < body.n_real(); ++i) r.peak_sigma1 = std::max(r.peak_sigma1, max_principal(body.cauchy(i)));
-    r.sigma1_hole_top = max_principal(body.cauchy(top));
-    for (int i = 0; i < body.n_real(); ++i)
-      r.smoothed_peak_sigma1 = std::max(r.smoothed_peak_sigma1, max_principal(body.smoothed_cauchy(i)));
-    r.smoothed_sigma1_hole_top = max_principal(body.smoothed_cauchy(top));
+    const HoleStress st = hole_stress(p, body, [&](int i) { return body.cauchy(i); });
+    r.peak_sigma1 = st.peak_sigma1;
+    r.sigma1_hole_top = st.sigma1_hole_top;
+    r.smoothed_peak_sigma1 = st.smoothed_peak_sigma1;
+    r.smoothed_sigma1_hole_top = st.smoothed_sigma1_hole_top;
     r.settle_change = std::abs(r.smoothed_sigma1_hole_top - top_before) / r.smoothed_sigma1_hole_top;
     if (!r.history.empty() && vmin_after_ramp > 0 && std::isfinite(vmin_after_ramp))
       r.speed_rise = r.history.back().vmax / vmin_after_ramp;

@@ -63,6 +63,25 @@ struct HoleResult {
   std::vector<Sample> history;
 };
 
+/// The times of run_hole's sheet: omega = pi c_T / (4 a) (its slowest, shear-dominated mode), the load ramp over
+/// ramp_transits a / c_T, the run's end t_ramp + settle / omega, and the step dt_factor h / c_L.
+struct HoleTimes {
+  double omega = 0, t_ramp = 0, t_end = 0, cL = 0, cT = 0;
+};
+HoleTimes hole_times(const HoleParams& p);
+/// The traction on the loaded edge x = a at time t: p.traction ramped by sin^2 over t_ramp, then held.
+double hole_load(const HoleParams& p, const HoleTimes& times, double t);
+/// The body of run_hole (our real particles and ghosts, the conditions, the material, damping p.damping omega).
+sph::TlConfig2D hole_config(const HoleParams& p);
+
+/// The stress readout of run_hole's sheet at rest, from any stress field T(i) on its real particles (ours:
+/// TlSolver2D::cauchy; a peer's, by our particle indices): the largest max principal stress over the particles,
+/// that at the particle nearest (0, R), and the same of the SPH-smoothed field (TlSolver2D::smoothed).
+struct HoleStress {
+  double peak_sigma1 = 0, sigma1_hole_top = 0, smoothed_peak_sigma1 = 0, smoothed_sigma1_hole_top = 0;
+};
+HoleStress hole_stress(const HoleParams& p, const sph::TlSolver2D& body, const std::function<sph::Tensor2(int)>& T);
+
 /// The sheet of p as the edge-instability runs take it (issue 15 b): Hooke at 1% of p's load, undamped, without the
 /// zero-energy-mode control, run to 12/omega after the ramp, so that the growth rate is the closure's mode's own.
 HoleParams linear_edge_run(HoleParams p);
