@@ -252,15 +252,17 @@ bench-ab: deps configure
 	  $(if $(AB_ARGS),--args '$(AB_ARGS)')
 
 # PySPH on its own rings example (Debian python3-pysph; its Depends bring cython3, build-essential and
-# python3-all-dev, which it needs to compile its kernels at the first run) against our rings of the same
-# layout: the same PEER_STEPS, OMP_NUM_THREADS=PEER_THREADS for both, one after the other
-# (tools/bench_peer.py says what is timed). Writes results/bench/peer.csv (a PySPH row, ours, and the row
-# ratio_ours_over_pysph whose particle_steps_per_s is the ratio) and merges it into results/bench.csv.
+# python3-all-dev, which it needs to compile its kernels at the first run) and LAMMPS MACHDYN's smd/ulsph on our
+# rings (PEER_THREADS MPI ranks) against our rings of the same layout: the same PEER_STEPS, OMP_NUM_THREADS=PEER_THREADS,
+# one after the other (tools/bench_peer.py says what is timed). Writes results/bench/peer.csv (a row per code and
+# the ratio rows ratio_ours_over_pysph, ratio_ours_over_lammps and ratio_ours_over_lammps_per_force_eval, whose
+# particle_steps_per_s is the ratio) and merges it into results/bench.csv.
 PEER_STEPS   ?= 600
 PEER_THREADS ?= 2
 bench-peer: deps configure
 	$(call apt_ensure,python3-pysph)
-	cmake --build $(BUILD) --target bench_gray_scenes -j $(JOBS)
+	tools/peers/build_machdyn.sh
+	cmake --build $(BUILD) --target bench_gray_scenes peer_rings -j $(JOBS)
 	$(PY) tools/bench_peer.py --steps $(PEER_STEPS) --threads $(PEER_THREADS) --ours $(BIN)/bench_gray_scenes \
 	  --pysph-python $(PY) --out results/bench --bench-csv results/bench.csv
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""make bench-peer: PySPH's solid_mech/rings.py against our rings of the same layout, same steps, same cores.
+"""make bench-peer: PySPH's solid_mech/rings.py and LAMMPS MACHDYN's smd/ulsph against our rings, same steps, same cores.
 
 1. PySPH (Debian python3-pysph), with --openmp and OMP_NUM_THREADS=<threads>, output disabled, into a
    temporary directory: a short warm-up run first (the first run compiles its Cython kernels into
@@ -12,10 +12,17 @@
 2. Ours, right after: build/bin/bench_gray_scenes --scenes rings --steps <steps> --max-threads <threads>
    (the rings at dp = 0.05, PySPH's layout; its time excludes 5 warm-up steps and the setup). It also runs
    the 1-thread case; the row taken is the one with <threads> threads.
+2b. LAMMPS MACHDYN (smd/ulsph with its artificial stress 0.3, Hertz contact between the rings; a plugin of Debian's
+   lmp, tools/peers/build_machdyn.sh) on our rings at the same spacing (build/bin/peer_rings --action layout --dp 0.05,
+   experiments/peers/lammps_rings.py --no-frames), on <threads> MPI ranks (Debian's liblammps is an Open MPI build;
+   it has no OpenMP styles for MACHDYN), for --steps steps; its time is LAMMPS's "Loop time" (the stepping). Its
+   integrator is velocity Verlet: one force evaluation per step, against two of ours and PySPH's EPEC; the speeds
+   are therefore also compared per force evaluation (particle-steps/s x evaluations per step).
 3. Writes <out>/peer.csv with the columns of results/bench.csv: one row for PySPH (variant
    pysph_<version>_openmp), one for ours (variant ours_artstress+xsph+visc) and the ratio row, variant
    ratio_ours_over_pysph, whose particle_steps_per_s column holds the ratio of the two throughputs
-   (dimensionless; particles and wall_s are nan there). The '#' header records the commands, the commit and
+   (dimensionless; particles and wall_s are nan there); and for LAMMPS a row (variant lammps_<version>_mpi<threads>)
+   and two ratio rows, ratio_ours_over_lammps (per step) and ratio_ours_over_lammps_per_force_eval. The '#' header records the commands, the commit and
    the load average before the runs (the machine may be shared: a busy machine slows both, not equally).
 4. Merges the rows into results/bench.csv: creates it if absent; if present with the same header, replaces
    any earlier bench-peer rows with these (so a rerun does not pile up rows); a different header is an error.
@@ -34,6 +41,8 @@ import tempfile
 COLUMNS = ["scene", "variant", "particles", "steps", "threads", "wall_s", "particle_steps_per_s", "error_name", "error"]
 SCENE = "rings_pysph_layout"
 RATIO_VARIANT = "ratio_ours_over_pysph"
+LAMMPS_RATIO_VARIANTS = ("ratio_ours_over_lammps", "ratio_ours_over_lammps_per_force_eval")
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OURS_VARIANT = "ours_artstress+xsph+visc"
 
 
@@ -100,6 +109,26 @@ def run_ours(binary, steps, threads, env, tmp):
     fail(f"bench_gray_scenes wrote no {SCENE} row with {threads} threads")
 
 
+def run_lammps(bin_dir, steps, ranks, env, tmp):
+    """LAMMPS MACHDYN smd/ulsph on our rings at dp = 0.05 (the layout of ours and PySPH's example): (particles,
+    wall_s of its stepping, version)."""
+    layout = os.path.join(tmp, "lammps_layout")
+    run([os.path.join(bin_dir, "peer_rings"), "--action", "layout", "--dp", "0.05", "--gap", "0.2", "--eps", "0.3",
+         "--out", layout], env)
+    frames = os.path.join(tmp, "lammps_frames.csv")
+    run(["/usr/bin/python3", os.path.join(ROOT, "experiments", "peers", "lammps_rings.py"), "--layout", layout,
+         "--frames", frames, "--work", os.path.join(tmp, "lammps"), "--art-stress", "0.3", "--max-steps", str(steps),
+         "--no-frames", "--ranks", str(ranks)], env)
+    meta = {}
+    with open(frames + ".run") as f:
+        for line in f:
+            k, _, v = line[1:].partition("=")
+            meta[k.strip()] = v.strip()
+    if int(meta["steps"]) != steps:
+        fail(f"LAMMPS ran {meta['steps']} steps, not {steps}")
+    return int(meta["particles"]), float(meta["wall_s"]), meta.get("code_version", "unknown")
+
+
 def read_table(path):
     """Header line and data rows of a CSV whose comment lines start with '#'."""
     with open(path) as f:
@@ -110,7 +139,8 @@ def read_table(path):
 
 
 def is_peer_row(r):
-    return r["scene"] == SCENE and (r["variant"].startswith("pysph_") or r["variant"] in (OURS_VARIANT, RATIO_VARIANT))
+    return r["scene"] == SCENE and (r["variant"].startswith(("pysph_", "lammps_")) or
+                                    r["variant"] in (OURS_VARIANT, RATIO_VARIANT) + LAMMPS_RATIO_VARIANTS)
 
 
 def write_rows(f, rows):
@@ -125,6 +155,8 @@ def main():
     ap.add_argument("--threads", type=int, default=2, help="OMP_NUM_THREADS for both codes")
     ap.add_argument("--warmup-steps", type=int, default=2, help="steps of PySPH's warm-up (compile) run")
     ap.add_argument("--ours", default="build/bin/bench_gray_scenes")
+    ap.add_argument("--lammps", action=argparse.BooleanOptionalAction, default=True,
+                    help="also LAMMPS MACHDYN (needs tools/peers/build_machdyn.sh and build/bin/peer_rings)")
     ap.add_argument("--pysph-python", default="/usr/bin/python3")
     ap.add_argument("--pysph-example", default=None, help="default: pysph/examples/solid_mech/rings.py")
     ap.add_argument("--out", default="results/bench", help="directory of peer.csv")
@@ -153,6 +185,9 @@ def main():
     with tempfile.TemporaryDirectory(prefix="bench_peer_") as tmp:
         py = run_pysph(args.pysph_python, example, args.steps, args.warmup_steps, env, tmp)
         ours = run_ours(args.ours, args.steps, args.threads, env, tmp)
+        if args.lammps:
+            lmp_particles, lmp_wall, lmp_version = run_lammps(os.path.dirname(args.ours), args.steps, args.threads,
+                                                              dict(env, OMP_NUM_THREADS="1"), tmp)
 
     py_rate = py["particles"] * args.steps / py["wall_s"]
     ours_rate = float(ours["particle_steps_per_s"])
@@ -169,6 +204,19 @@ def main():
          "wall_s": "nan", "particle_steps_per_s": f"{ratio:.4g}", "error_name": "none", "error": "nan"},
     ]
 
+    if args.lammps:
+        lmp_rate = lmp_particles * args.steps / lmp_wall
+        rows += [
+            {"scene": SCENE, "variant": f"lammps_{lmp_version}_mpi{args.threads}", "particles": lmp_particles,
+             "steps": args.steps, "threads": args.threads, "wall_s": f"{lmp_wall:.6g}",
+             "particle_steps_per_s": f"{lmp_rate:.6g}", "error_name": "none", "error": "nan"},
+            {"scene": SCENE, "variant": LAMMPS_RATIO_VARIANTS[0], "particles": "nan", "steps": args.steps,
+             "threads": args.threads, "wall_s": "nan", "particle_steps_per_s": f"{ours_rate / lmp_rate:.4g}",
+             "error_name": "none", "error": "nan"},
+            {"scene": SCENE, "variant": LAMMPS_RATIO_VARIANTS[1], "particles": "nan", "steps": args.steps,
+             "threads": args.threads, "wall_s": "nan", "particle_steps_per_s": f"{2 * ours_rate / lmp_rate:.4g}",
+             "error_name": "none", "error": "nan"},
+        ]
     os.makedirs(args.out, exist_ok=True)
     peer = os.path.join(args.out, "peer.csv")
     with open(peer, "w") as f:
@@ -182,7 +230,11 @@ def main():
                 f"{py['initial_s']:.6g} s\n")
         f.write(f"# ours = {args.ours} --scenes rings --steps {args.steps} --max-threads {args.threads}\n")
         f.write(f"# OMP_NUM_THREADS = {args.threads}\n# load_average_before = {load}\n")
-        f.write(f"# ratio row: particle_steps_per_s = ours / pysph\n")
+        f.write(f"# ratio row: particle_steps_per_s = ours / pysph (both two force evaluations per step)\n")
+        if args.lammps:
+            f.write(f"# lammps = peer_rings --action layout --dp 0.05 --gap 0.2 --eps 0.3; lammps_rings.py --art-stress 0.3 "
+                    f"--max-steps {args.steps} --no-frames --ranks {args.threads}; time: its Loop time\n")
+            f.write("# lammps ratio rows: ours / lammps per step, and per force evaluation (ours 2 a step, LAMMPS 1)\n")
         write_rows(f, rows)
 
     kept = []
@@ -202,6 +254,9 @@ def main():
     print(f"bench_peer: PySPH integrator {py['integrator']}, {py['particles']} particles; ours {ours['particles']}")
     print(f"bench_peer: ours / PySPH = {ratio:.3g} ({ours_rate:.3g} / {py_rate:.3g} particle-steps/s, "
           f"{args.steps} steps, {args.threads} threads)")
+    if args.lammps:
+        print(f"bench_peer: ours / LAMMPS = {ours_rate / lmp_rate:.3g} per step, {2 * ours_rate / lmp_rate:.3g} per force "
+              f"evaluation ({lmp_rate:.3g} particle-steps/s on {args.threads} MPI ranks, {lmp_particles} particles)")
     return 0
 
 

@@ -14,7 +14,9 @@ Debian's lmp: tools/peers/build_machdyn.sh), from our particles, with its frames
      run's totals (steps, wall_s from LAMMPS's "Loop time", particles).
 The run goes to t_max: MACHDYN has no test of our contact to stop on; peer_rings --action measure cuts the frames at
 run_rings's stop (run_after_contact after separation). What MACHDYN cannot do as we do is in lammps_rings.in's header.
-Usage: lammps_rings.py --layout DIR --frames FILE --work DIR [--art-stress EPS] [--max-steps N] [--lmp lmp]
+--no-frames (make bench-peer): no frame but the first (the timing is then the stepping's); --ranks N runs lmp on N MPI
+ranks (mpirun; Debian's liblammps is built with Open MPI).
+Usage: lammps_rings.py --layout DIR --frames FILE --work DIR [--art-stress EPS] [--max-steps N] [--no-frames] [--ranks N] [--lmp lmp]
 """
 import argparse
 import os
@@ -105,8 +107,12 @@ def main():
     ap.add_argument("--work", required=True, help="folder for the data file, the dump and LAMMPS's log")
     ap.add_argument("--art-stress", type=float, default=0.0, help="smd/ulsph *ARTIFICIAL_STRESS (0: off)")
     ap.add_argument("--max-steps", type=int, default=-1, help="stop after this many steps (quick runs)")
+    ap.add_argument("--no-frames", action="store_true", help="dump only the first frame (timing runs)")
+    ap.add_argument("--ranks", type=int, default=1, help="MPI ranks (mpirun -np N)")
     ap.add_argument("--lmp", default="lmp")
     a = ap.parse_args()
+    if a.ranks < 1:
+        fail("--ranks must be >= 1")
     a.work, a.frames = os.path.abspath(a.work), os.path.abspath(a.frames)  # lmp runs in the repository root
     s = peer_io.settings(a.layout)
     layout = peer_io.read_table(os.path.join(a.layout, "layout.csv"))
@@ -118,14 +124,17 @@ def main():
     data, dump, steps_file, log = (os.path.join(a.work, n) for n in ("rings.data", "rings.dump", "sample_steps.txt", "log.lammps"))
     write_data(data, layout, s)
     samples, steps = sample_steps(s["dt"], s["sample_dt"], s["t_max"], a.max_steps)
+    if a.no_frames:
+        samples = {0: 0.0}
     with open(steps_file, "w") as f:
         later = sorted(k for k in samples if k > 0)
         f.write("\n".join(str(k) for k in later) + f"\n{steps + 10**9}\n")  # a last entry beyond the run
-    cmd = [a.lmp, "-in", os.path.join("tools", "peers", "lammps_rings.in"), "-log", log, "-screen", "none",
+    mpi = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(a.ranks)] if a.ranks > 1 else []
+    cmd = mpi + [a.lmp, "-in", os.path.join("tools", "peers", "lammps_rings.in"), "-log", log, "-screen", "none",
            "-var", "data", data, "-var", "dump", dump, "-var", "sample_steps", steps_file, "-var", "dp", repr(s["dp"]), "-var", "h", repr(s["h"]),
            "-var", "rho0", repr(s["rho0"]), "-var", "c0", repr(s["c0"]), "-var", "G", repr(s["mu"]),
            "-var", "alpha", repr(s["alpha"]), "-var", "art_stress", repr(a.art_stress), "-var", "dt", repr(s["dt"]),
-           "-var", "steps", str(steps), "-var", "machdyn_so", os.path.join("build", "peers", "machdynplugin.so")]
+           "-var", "steps", str(steps), "-var", "machdyn_so", peer_io.machdyn_plugin()]
     t0 = time.time()
     p = subprocess.run(cmd, cwd=ROOT)
     if p.returncode != 0:
@@ -133,7 +142,7 @@ def main():
     elapsed = time.time() - t0
     with open(log) as f:
         text = f.read()
-    m = re.search(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms", text)
+    m = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms", text)
     if not m:
         fail(f"{log}: no 'Loop time' line: the run did not finish")
     version = subprocess.run(["dpkg-query", "-W", "-f", "${Version}", "lammps"], capture_output=True, text=True).stdout.strip()
@@ -142,7 +151,7 @@ def main():
     count = convert(dump, samples, a.frames, meta)
     os.remove(dump)  # converted: the frames file holds the same numbers
     with open(a.frames + ".run", "w") as f:
-        peer_io.write_header(f, dict(meta, steps=m.group(2), wall_s=m.group(1), particles=m.group(3), frames=count,
+        peer_io.write_header(f, dict(meta, steps=m.group(3), wall_s=m.group(1), particles=m.group(4), ranks=m.group(2), frames=count,
                                      process_s=f"{elapsed:.6g}", t_last=repr(samples[max(samples)])))
 
 

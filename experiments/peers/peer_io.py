@@ -5,9 +5,18 @@ settings(folder)    settings.csv of a layout folder -> {name: float}
 header(path)        the '# key = value' lines at the top of a file -> {key: value} (our files and the traces)
 values(path)        a values file (quantity,value,note) -> {quantity: float}
 FrameWriter         writes the frames format of experiments/peers/frames_reader.hpp (t,id,x,y,u,v)
+machdyn_plugin()    where tools/peers/build_machdyn.sh leaves LAMMPS's MACHDYN plugin (its MACHDYN_OUT, or its default)
 """
 import csv
 import os
+
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def machdyn_plugin():
+    """The plugin tools/peers/build_machdyn.sh builds: $MACHDYN_OUT, else <repository>/build/peers/machdynplugin.so."""
+    return os.environ.get("MACHDYN_OUT") or os.path.join(ROOT, "build", "peers", "machdynplugin.so")
 
 
 def read_table(path):

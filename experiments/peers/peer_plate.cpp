@@ -13,6 +13,7 @@
 //   clamp 2, 3 layers, sample 0.5, stop at the tip's first zero crossing, T = 2 t_1, t_end 2 thin-plate
 //   periods); the scheme's defaults from src/updated_lagrangian/parameters.hpp (mu set per row).
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "core/kernels.hpp"
@@ -42,9 +43,16 @@ int main(int argc, char** argv) {
       if (trace.empty()) throw std::invalid_argument("--action measure needs --trace <file>");
       const sph::CsvTable t = sph::read_csv(trace);
       const std::size_t ct = t.column("t"), cy = t.column("y_tip");
+      // strtod, not stod: a peer may write subnormal numbers (LAMMPS writes 1e-310 and the like), which stod refuses.
+      auto number = [&](const std::string& text) {
+        char* end = nullptr;
+        const double x = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0') throw std::runtime_error(trace + ": '" + text + "' is not a number");
+        return x;
+      };
       std::vector<scenes::TipSample> samples;
       for (const auto& r : t.rows) {
-        const double ti = std::stod(r.at(ct)), yi = std::stod(r.at(cy));
+        const double ti = number(r.at(ct)), yi = number(r.at(cy));
         if (!std::isfinite(ti) || !std::isfinite(yi)) throw std::runtime_error(trace + ": a non-finite sample at t = " + r.at(ct));
         samples.push_back({ti, yi, NAN, NAN, 1});
       }

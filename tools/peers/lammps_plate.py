@@ -135,7 +135,7 @@ def run(ctx, layout_dir, case_dir, variant, max_steps=None, dump_every=0, overri
     if max_steps is not None:
         nsteps = min(nsteps, max_steps)
     raw = os.path.join(work, "trace_raw.csv")
-    v = {"peers": HERE, "machdyn_so": os.path.join(os.path.abspath(ctx.build), "peers", "machdynplugin.so"),
+    v = {"peers": HERE, "machdyn_so": peer_io.machdyn_plugin(),
          "data": data, "groups": groups, "skin": s["h"], "dt": repr(s["dt"]), "h": repr(s["h"]),
          "rho0": repr(s["rho0"]), "c0": repr(s["c0"]), "E": repr(s["E"]), "nu": repr(s["nu"]), "mu": repr(s["mu"]),
          "q1": repr(s["alpha"]), "q2": repr(s["beta"]), "tip": tip + 1, "y0": layout[tip]["y"],

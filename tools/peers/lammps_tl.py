@@ -142,7 +142,7 @@ def run(ctx, layout_dir, case_dir, variant, max_steps=None, overrides=None):
     nsteps = int(math.ceil(s["t_end"] / s["dt"])) * (10 if extra["dt_safety"] > 0 else 1) + 10
     if max_steps is not None:
         nsteps = min(nsteps, max_steps)
-    v = {"peers": HERE, "machdyn_so": os.path.join(os.path.abspath(ctx.build), "peers", "machdynplugin.so"),
+    v = {"peers": HERE, "machdyn_so": peer_io.machdyn_plugin(),
          "data": data, "groups": groups, "pulse": os.path.join(layout_dir, "pulse.csv"), "trace": raw,
          "skin": repr(0.5 * s["support_radius"]), "dt": repr(s["dt"]), "ps": repr(s["ps"]), "rows": rows,
          "rho": repr(s["rho"]), "E": repr(s["E"]), "nu": repr(s["nu"]), "q1": 0.0, "q2": 0.0,
@@ -212,7 +212,7 @@ def run_hole(ctx, layout_dir, case_dir, variant, max_steps=None, overrides=None)
     nsteps = int(math.ceil(s["t_end"] / s["dt"])) * (10 if extra["dt_safety"] > 0 else 1) + 10
     if max_steps is not None:
         nsteps = min(nsteps, max_steps)
-    v = {"peers": HERE, "machdyn_so": os.path.join(os.path.abspath(ctx.build), "peers", "machdynplugin.so"),
+    v = {"peers": HERE, "machdyn_so": peer_io.machdyn_plugin(),
          "data": data, "groups": groups, "load": os.path.join(layout_dir, "load.csv"), "trace": raw,
          "skin": repr(0.5 * s["support_radius"]), "dt": repr(s["dt"]), "ps": repr(s["ps"]),
          "rho": repr(s["rho"]), "E": repr(s["E"]), "nu": repr(s["nu"]), "q1": 0.0, "q2": 0.0,

@@ -8,9 +8,13 @@ the same spacing. The variants:
   xsph_cont     the same with continuity and the velocity gradient of the XSPH velocity (3.6), as ours:
                 then only the integrator and the code differ
   walls         PySPH's own example clamp (held particles a wall array with sigma = 0)
+  lammps_tlsph  LAMMPS MACHDYN smd/tlsph (total Lagrangian, hourglass control), our clamp and initial mode, its own
+  lammps_ulsph  step; smd/ulsph with its own artificial stress 0.3 (tools/peers/lammps_plate.py says what differs)
 The cases: Table 1's three V_f = 0.01 rows and its V_f = 0.05, mu = 0.6 row at the paper's n = 20 (dp = 0.1),
 Table 2's three V_f = 0.01 rows and its two open mu = 0.6 rows at the paper's dp = 0.1 (n = 10), and the
-convergence of Table 1's V_f = 0.01 rows over n = 5, 10, 20 (dp = 0.4, 0.2, 0.1).
+convergence of Table 1's V_f = 0.01 rows over n = 5, 10, 20 (dp = 0.4, 0.2, 0.1); LAMMPS (cases of their own, named
+..._lammps, ~9 min of one core per variant at dp = 0.1) on Table 1's V_f = 0.01 rows at those three spacings and Table
+2's at dp = 0.1.
 """
 import os
 
@@ -21,6 +25,7 @@ RUN_COLUMNS = ["case", "code", "variant", "version", "row", "table", "H", "Vf", 
                "wall_s", "particle_steps_per_s", "force_evals_per_step", "T_sph", "crossings", "tip_amplitude",
                "T_theory_reading", "T_published"]
 FULL = ["ours_clamp", "xsph_cont", "walls"]
+LAMMPS = ["lammps_tlsph", "lammps_ulsph"]
 PEER_ARGS = {"ours_clamp": ["--clamp", "ours"], "xsph_cont": ["--clamp", "ours", "--continuity", "xsph"],
              "walls": ["--clamp", "walls"]}
 
@@ -40,18 +45,21 @@ def row_name(H, Vf, mu):
 
 def cases(quick):
     if quick:
-        return [(2.0, 0.01, 0.6, 0.5, ["ours_clamp", "xsph_cont"])]
+        return [(2.0, 0.01, 0.6, 0.5, ["ours_clamp", "xsph_cont"] + LAMMPS)]
     t1 = [(2.0, 0.01, mu, 0.1, FULL if mu == 0.6 else FULL[:2]) for mu in (0.22, 0.3, 0.6)]
     t1.append((2.0, 0.05, 0.6, 0.1, FULL[:2]))
     t2 = [(1.0, 0.01, mu, 0.1, FULL[:2]) for mu in (0.22, 0.3, 0.6)]
     t2 += [(1.0, Vf, 0.6, 0.1, FULL[:2]) for Vf in (0.03, 0.05)]
     conv = [(2.0, 0.01, mu, dp, FULL[:2]) for mu in (0.22, 0.3, 0.6) for dp in (0.4, 0.2)]
-    return conv + t1 + t2
+    lmp = [(2.0, 0.01, mu, dp, LAMMPS) for mu in (0.22, 0.3, 0.6) for dp in (0.4, 0.2, 0.1)]
+    lmp += [(1.0, 0.01, mu, 0.1, LAMMPS) for mu in (0.22, 0.3, 0.6)]
+    return conv + t1 + t2 + lmp
 
 
 def case_name(case):
-    H, Vf, mu, dp, _ = case
-    return f"{row_name(H, Vf, mu)}_dp{dp:g}"
+    H, Vf, mu, dp, variants = case
+    lammps_only = all(v in LAMMPS for v in variants)
+    return f"{row_name(H, Vf, mu)}_dp{dp:g}" + ("_lammps" if lammps_only else "")
 
 
 def run_case(ctx, case, d):
@@ -79,7 +87,15 @@ def run_case(ctx, case, d):
                  T_sph=float(p["T_sph"]) if not ctx.quick else float("nan"), crossings=float("nan"),
                  tip_amplitude=float(p["tip_amplitude"]))]
     version = ctx.version("pysph")
-    for variant in variants:
+
+    def measured(code, variant, trace):
+        folder = os.path.join(d, f"measured_{code}_{variant}")
+        os.makedirs(folder, exist_ok=True)
+        ctx.run([ctx.bin("peer_plate"), "--action", "measure", "--trace", trace, "--out", folder] + common,
+                os.path.join(folder, "measure.log"))
+        return peer_io.values(os.path.join(folder, "values_peer_plate.csv"))
+
+    for variant in (v for v in variants if v not in LAMMPS):
         trace = os.path.join(d, f"trace_pysph_{variant}.csv")
         cmd = [ctx.py, os.path.join(ctx.root, "experiments", "peers", "pysph_plate.py"), "--layout", layout,
                "--trace", trace, "--disable-output", "-d", os.path.join(d, f"pysph_{variant}")] + PEER_ARGS[variant]
@@ -88,14 +104,19 @@ def run_case(ctx, case, d):
         if ctx.quick:
             cmd += ["--max-steps", "30"]
         ctx.run(cmd, os.path.join(d, f"pysph_{variant}.log"))
-        measured = os.path.join(d, f"measured_pysph_{variant}")
-        os.makedirs(measured, exist_ok=True)
-        ctx.run([ctx.bin("peer_plate"), "--action", "measure", "--trace", trace, "--out", measured] + common,
-                os.path.join(measured, "measure.log"))
-        m = peer_io.values(os.path.join(measured, "values_peer_plate.csv"))
+        m = measured("pysph", variant, trace)
         meta = peer_io.header(trace)
         rows.append(dict(base, code="pysph", variant=variant, version=version, particles=int(meta["particles"]),
                          dt=s["dt"], steps=int(meta["steps"]), wall_s=float(meta["wall_s"]), force_evals_per_step=2,
+                         T_sph=m["T_sph"] if not ctx.quick else float("nan"), crossings=int(m["crossings"]),
+                         tip_amplitude=m["tip_amplitude"]))
+    for variant in (v for v in variants if v in LAMMPS):
+        import lammps_plate
+        name = variant[len("lammps_"):]
+        r = lammps_plate.run(ctx, layout, d, name, max_steps=30 if ctx.quick else None)
+        m = measured("lammps", name, r["trace"])
+        rows.append(dict(base, code="lammps", variant=name, version=r["version"], particles=r["particles"], dt=r["dt"],
+                         steps=r["steps"], wall_s=r["wall_s"], force_evals_per_step=r["force_evals_per_step"],
                          T_sph=m["T_sph"] if not ctx.quick else float("nan"), crossings=int(m["crossings"]),
                          tip_amplitude=m["tip_amplitude"]))
     for r in rows:
