@@ -1,0 +1,192 @@
+"""make peers' slab under tension (Gray 2001 Sec 7.3, Figs 8-10): PySPH and LAMMPS MACHDYN on our layout, beside ours.
+
+A case is one of the figures' runs (eps = 0: Fig 8, standard SPH; eps = 0.3: Figs 9-10) at a spacing:
+build/bin/peer_slab --action layout writes our particles and settings, each peer runs them and writes every particle
+every sample_dt (our frames format), peer_slab --action measure measures the frames with our functions (the
+SlabMeter and summary run_slab uses, the driver's per-run values) up to where run_slab stops, and our driver
+(gray2001_fig8_10_slab --runs eps --dp dp --study-dps 0, the store of runs off so that it steps) runs the same.
+The peers' variants:
+  PySPH (experiments/peers/pysph_slab.py): <plasticity>_<continuity>
+    plasticity pysph         its hvi.VonMisesPlasticity2D as its examples place it (in the evaluation; surface
+                             without s22; the integrator's stored stress never returned)
+               ours          our return (materials.hpp, with S_zz) on the stored stress after each stage
+               pysph_stored  its surface, on the stored stress (eps = 0.3 only: to tell the two differences apart)
+               ours_eval     our surface, in the evaluation (eps = 0.3 only)
+    continuity v (PySPH's) or xsph (ours: the XSPH velocity in continuity and the velocity gradient)
+  LAMMPS (experiments/peers/lammps_slab.py, tools/peers/lammps_slab.in): ulsph, smd/ulsph with
+    *STRENGTH_LINEAR_PLASTIC G 0.03 0 and, at eps > 0, *ARTIFICIAL_STRESS eps (its own form); no XSPH.
+Spacings: the production dp = 0.032 (G-fig8's rows are checked at the paper's dp = 0.016, 8x the particle-steps of
+0.032: 4x the particles, 2x the steps; a PySPH eps = 0.3 run at 0.016 would take ~1 day on one core) and the
+exploratory dp = 0.064. Quick: dp = 0.128, a few steps of every code path, nothing measured.
+Frames are kept gzipped (frames_<code>_<variant>.csv.gz) beside the measured trace.
+"""
+import gzip
+import math
+import os
+import shutil
+
+import peer_io
+
+NAME = "slab"
+MEASURED = ["fracture_time", "first_split_time", "clumping_time", "opening_time", "opening_from_junction", "crack_x",
+            "crack_from_junction", "crack_from_centre", "neck_before_fracture", "neck_before_fracture_over_dp",
+            "neck_10dp_time", "neck_at_t542", "onset_time", "onset_strain", "strain_at_fracture", "strain_at_t394",
+            "pieces_at_t394"]
+RUN_COLUMNS = ["case", "code", "variant", "version", "eps", "dp", "particles", "dt", "steps", "wall_s",
+               "particle_steps_per_s", "force_evals_per_step"] + MEASURED + ["t_last", "complete", "blow_up"]
+# The run columns that hold a G-fig8 row's quantity (reference/G-fig8.csv), per figure run.
+G_FIG8 = {0.0: {"eps0_fracture_time": "fracture_time", "eps0_opening_from_junction": "opening_from_junction",
+                "eps0_clumping_time": "clumping_time", "eps0_opening_time": "opening_time",
+                "eps0_first_split_time": "first_split_time"},
+          0.3: {"strain_at_t394": "strain_at_t394", "eps0.3_pieces_at_t394": "pieces_at_t394",
+                "eps0.3_fracture_time": "fracture_time", "eps0.3_onset_strain": "onset_strain",
+                "eps0.3_neck_before_fracture": "neck_before_fracture", "eps0.3_neck_10dp_time": "neck_10dp_time",
+                "eps0.3_neck_at_t542": "neck_at_t542", "eps0.3_crack_from_centre": "crack_from_centre",
+                "eps0.3_clumping_time": "clumping_time"}}
+# slab_run_values' names (the driver's values file and peer_slab's) -> run columns.
+VALUE_COLUMNS = {0.0: {}, 0.3: {"strain_at_t394": "strain_at_t394", "eps0.3_pieces_at_t394": "pieces_at_t394",
+                                 "eps0.3_neck_10dp_time": "neck_10dp_time", "eps0.3_neck_at_t542": "neck_at_t542",
+                                 "eps0.3_crack_from_centre": "crack_from_centre"}}
+SUMMARY_COLUMNS = ["clumping_time", "first_split_time", "fracture_time", "crack_x", "crack_from_junction", "opening_time",
+                   "opening_from_junction", "neck_before_fracture", "neck_before_fracture_over_dp", "onset_time",
+                   "onset_strain", "strain_at_fracture"]
+PYSPH_FULL = {0.0: ["pysph_v", "pysph_xsph", "ours_v", "ours_xsph"],
+              0.3: ["pysph_v", "pysph_xsph", "ours_v", "ours_xsph", "pysph_stored_xsph", "ours_eval_xsph"]}
+PYSPH_QUICK = {0.0: ["pysph_v", "ours_xsph"], 0.3: ["pysph_stored_v", "ours_eval_xsph"]}
+EXPLORE_DP, PRODUCTION_DP, QUICK_DP = 0.064, 0.032, 0.128
+
+
+def cases(quick):
+    if quick:
+        return [(eps, QUICK_DP, PYSPH_QUICK[eps]) for eps in (0.0, 0.3)]
+    return [(eps, dp, PYSPH_FULL[eps]) for dp in (EXPLORE_DP, PRODUCTION_DP) for eps in (0.0, 0.3)]
+
+
+def case_name(case):
+    eps, dp, _ = case
+    return f"eps{eps:g}_dp{dp:g}"
+
+
+def published(root):
+    """G-fig8's published values by quantity, read from reference/G-fig8.csv (their sources are there)."""
+    return {r["quantity"]: float(r["published"]) for r in peer_io.read_table(os.path.join(root, "reference", "G-fig8.csv"))
+            if r["published"] not in ("", None)}
+
+
+def measured_row(eps, values_path, summary_path):
+    """The run columns from a values file and a summary.csv, both written by our functions (slab_run_values, the
+    driver's summary row): the driver's for ours, peer_slab's for a peer."""
+    v = peer_io.values(values_path)
+    summary = peer_io.read_table(summary_path)
+    srow = next(r for r in summary if math.isclose(float(r["eps"]), eps, abs_tol=1e-12))
+    out = {c: float(srow[c]) for c in SUMMARY_COLUMNS}
+    for name, col in VALUE_COLUMNS[eps].items():
+        out[col] = v[name]
+    return out
+
+
+def gzip_file(path):
+    with open(path, "rb") as f, gzip.open(path + ".gz", "wb") as g:
+        shutil.copyfileobj(f, g)
+    os.remove(path)
+
+
+def run_case(ctx, case, d):
+    eps, dp, pysph_variants = case
+    common = ["--dp", repr(dp), "--eps", repr(eps)]
+    layout = os.path.join(d, "layout")
+    os.makedirs(layout, exist_ok=True)
+    ctx.run([ctx.bin("peer_slab"), "--action", "layout", "--out", layout] + common, os.path.join(d, "layout.log"))
+    s = peer_io.settings(layout)
+    base = dict(case=case_name(case), eps=eps, dp=dp, dt=s["dt"])
+    nan = float("nan")
+    # Ours: the figures' driver, one run (--runs eps) at this spacing without the resolution study, stepped here
+    # (SPH_RUN_CACHE unset: the store of runs would serve a run stepped elsewhere, with its wall time).
+    ours_dir = os.path.join(d, "ours")
+    os.makedirs(ours_dir, exist_ok=True)
+    cmd = [ctx.bin("gray2001_fig8_10_slab"), "--dp", repr(dp), "--runs", repr(eps), "--study-dps", "0", "--out", ours_dir]
+    if ctx.quick:
+        cmd += ["--t-max", "2", "--t-max-eps0", "2"]
+    env = {k: v for k, v in ctx.env.items() if k != "SPH_RUN_CACHE"}
+    ctx.run(cmd, os.path.join(ours_dir, "run.log"), env=env)
+    ssum = next(r for r in peer_io.read_table(os.path.join(ours_dir, "summary.csv")) if math.isclose(float(r["eps"]), eps))
+    ours = dict(base, code="ours", variant="ours",
+                version=peer_io.header(os.path.join(ours_dir, "summary.csv")).get("code_version", ""),
+                particles=int(float(ssum["particles"])), steps=int(float(ssum["steps"])), wall_s=float(ssum["wall_s"]),
+                force_evals_per_step=2, blow_up=ssum.get("blow_up", "") or "none",
+                **measured_row(eps, os.path.join(ours_dir, "values_gray2001_fig8_10_slab.csv"), os.path.join(ours_dir, "summary.csv")))
+    ours["t_last"] = nan
+    ours["complete"] = 1
+    if ctx.quick:  # a few steps: nothing is measured
+        for c in MEASURED:
+            ours[c] = nan
+    rows = [ours]
+
+    def measure(code, variant, frames, info, force_evals, version):
+        measured = os.path.join(d, f"measured_{code}_{variant}")
+        os.makedirs(measured, exist_ok=True)
+        ctx.run([ctx.bin("peer_slab"), "--action", "measure", "--frames", frames, "--out", measured] + common,
+                os.path.join(measured, "measure.log"))
+        gzip_file(frames)
+        facts = {r["name"]: r["value"] for r in peer_io.read_table(info)}
+        v = peer_io.values(os.path.join(measured, "values_peer_slab.csv"))
+        row = dict(base, code=code, variant=variant, version=version, particles=int(facts["particles"]),
+                   steps=int(facts["steps"]), wall_s=float(facts["wall_s"]), force_evals_per_step=force_evals,
+                   blow_up=facts.get("blow_up", "none"), t_last=v["t_last"], complete=int(v["complete"]),
+                   **measured_row(eps, os.path.join(measured, "values_peer_slab.csv"), os.path.join(measured, "summary.csv")))
+        if ctx.quick:  # a few steps: nothing is measured
+            for c in MEASURED:
+                row[c] = nan
+        return row
+
+    version = ctx.version("pysph")
+    for variant in pysph_variants:
+        plasticity, _, continuity = variant.rpartition("_")
+        frames, info = os.path.join(d, f"frames_pysph_{variant}.csv"), os.path.join(d, f"info_pysph_{variant}.csv")
+        cmd = [ctx.py, os.path.join(ctx.root, "experiments", "peers", "pysph_slab.py"), "--layout", layout,
+               "--frames", frames, "--info", info, "--plasticity", plasticity, "--continuity", continuity,
+               "--disable-output", "-d", os.path.join(d, f"pysph_{variant}")]
+        if ctx.threads > 1:
+            cmd.append("--openmp")
+        if ctx.quick:
+            cmd += ["--max-steps", "30"]  # past t = 2 at dp = 0.128: two frames
+        ctx.run(cmd, os.path.join(d, f"pysph_{variant}.log"))
+        rows.append(measure("pysph", variant, frames, info, 2, version))
+    variant = f"ulsph_art{eps:g}" if eps > 0 else "ulsph"
+    frames, info = os.path.join(d, f"frames_lammps_{variant}.csv"), os.path.join(d, f"info_lammps_{variant}.csv")
+    cmd = [ctx.py, os.path.join(ctx.root, "experiments", "peers", "lammps_slab.py"), "--layout", layout,
+           "--work", os.path.join(d, f"lammps_{variant}"), "--frames", frames, "--info", info]
+    if ctx.quick:
+        cmd += ["--max-steps", "30"]
+    ctx.run(cmd, os.path.join(d, f"lammps_{variant}.log"))
+    rows.append(measure("lammps", variant, frames, info, 1, ctx.version("lammps")))
+    for r in rows:
+        r["particle_steps_per_s"] = r["particles"] * r["steps"] / r["wall_s"] if r["wall_s"] > 0 else nan
+    return rows
+
+
+def compare(rows):
+    from run_peers import num, ratio
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    pub = published(root)
+    ours = {(r["case"]): r for r in rows if r["code"] == "ours"}
+    out = []
+    for r in rows:
+        if r["code"] == "ours" or r["case"] not in ours:
+            continue
+        o = ours[r["case"]]
+        eps = num(r["eps"])
+        speed = num(o["particle_steps_per_s"]) * num(o["force_evals_per_step"])
+        peer_speed = num(r["particle_steps_per_s"]) * num(r["force_evals_per_step"])
+        for quantity, col in G_FIG8[0.3 if eps > 0 else 0.0].items():
+            out.append(dict(scene=NAME, case=r["case"], quantity=quantity, dp=r["dp"], published=pub.get(quantity, math.nan),
+                            theory=math.nan, ours=o[col], code=r["code"], variant=r["variant"], peer=r[col],
+                            peer_over_ours=ratio(r[col], o[col]), ours_over_theory=math.nan, peer_over_theory=math.nan,
+                            ours_particle_steps_per_s=o["particle_steps_per_s"],
+                            peer_particle_steps_per_s=r["particle_steps_per_s"],
+                            ours_force_evals_per_step=o["force_evals_per_step"],
+                            peer_force_evals_per_step=r["force_evals_per_step"],
+                            ours_over_peer_per_force_eval=speed / peer_speed if peer_speed > 0 else math.nan,
+                            note="our measurement (scenes::SlabMeter, summarise_slab, slab_run_values) of both; -1: never"
+                                 + ("" if num(r["complete"]) == 1 else "; the peer's frames end before run_slab's stop")))
+    return out
