@@ -13,8 +13,11 @@ The peers' variants:
                pysph_stored  its surface, on the stored stress (eps = 0.3 only: to tell the two differences apart)
                ours_eval     our surface, in the evaluation (eps = 0.3 only)
     continuity v (PySPH's) or xsph (ours: the XSPH velocity in continuity and the velocity gradient)
-  LAMMPS (experiments/peers/lammps_slab.py, tools/peers/lammps_slab.in): ulsph, smd/ulsph with
-    *STRENGTH_LINEAR_PLASTIC G 0.03 0 and, at eps > 0, *ARTIFICIAL_STRESS eps (its own form); no XSPH.
+  LAMMPS (experiments/peers/lammps_slab.py, tools/peers/lammps_slab.in): ulsph[_art<eps>][_ourdt][_ratefix],
+    smd/ulsph with *STRENGTH_LINEAR_PLASTIC G 0.03 0 and, at eps > 0, *ARTIFICIAL_STRESS eps (its own form); no XSPH;
+    at LAMMPS's own time step (0.1 of its CFL step, 0.4 x ours) and, _ourdt, at ours (unstable for it: shown, not
+    a reading); _ratefix: the plugin with smd/ulsph's plastic stress update divided by dt as its elastic one is
+    (tools/peers/build_machdyn_ratefix.sh, built from build_machdyn.sh's objects; env MACHDYN_OBJ elsewhere).
 Spacings: the production dp = 0.032 (G-fig8's rows are checked at the paper's dp = 0.016, 8x the particle-steps of
 0.032: 4x the particles, 2x the steps; a PySPH eps = 0.3 run at 0.016 would take ~1 day on one core) and the
 exploratory dp = 0.064. Quick: dp = 0.128, a few steps of every code path, nothing measured.
@@ -53,6 +56,12 @@ SUMMARY_COLUMNS = ["clumping_time", "first_split_time", "fracture_time", "crack_
 PYSPH_FULL = {0.0: ["pysph_v", "pysph_xsph", "ours_v", "ours_xsph"],
               0.3: ["pysph_v", "pysph_xsph", "ours_v", "ours_xsph", "pysph_stored_xsph", "ours_eval_xsph"]}
 PYSPH_QUICK = {0.0: ["pysph_v", "ours_xsph"], 0.3: ["pysph_stored_v", "ours_eval_xsph"]}
+# LAMMPS's runs (time step, plugin): its own time step (0.1 x smd/ulsph's CFL step 2 h / c_L, the MACHDYN examples'
+# safety factor; 0.4 x ours) with the stock plugin and with the plastic update's rate divided by dt
+# (tools/peers/build_machdyn_ratefix.sh says why); and ours (0.5 h / (c_L + v_end)), at which smd/ulsph's velocity
+# Verlet is unstable from the start at dp = 0.064 (shown, not a reading of the scene).
+LAMMPS_VARIANTS = [("lammps", "stock"), ("lammps", "ratefix"), ("ours", "stock")]
+PLUGINS = {"stock": "machdynplugin.so", "ratefix": "machdynplugin_ratefix.so"}
 EXPLORE_DP, PRODUCTION_DP, QUICK_DP = 0.064, 0.032, 0.128
 
 
@@ -91,6 +100,32 @@ def gzip_file(path):
     os.remove(path)
 
 
+def check_measurement_path(ctx, eps, dp, ours_dir, d):
+    """Our own run's frames (the driver's frames_<run>.csv, one at every sample in quick mode) measured by peer_slab
+    --action measure must give the driver's trace column for column (the energies aside, which need the solver): the
+    path every peer's frames take is the one our driver measures with."""
+    tag = "eps0.3" if eps > 0 else "eps0"
+    rows = peer_io.read_table(os.path.join(ours_dir, f"frames_{tag}.csv"))
+    frames = os.path.join(d, "frames_ours.csv")
+    with open(frames, "w") as f:
+        f.write("t,id,x,y,u,v\n")
+        last, i = None, 0
+        for r in rows:
+            i = 0 if r["t"] != last else i + 1
+            last = r["t"]
+            f.write(f"{r['t']},{i},{r['x']},{r['y']},0,0\n")
+    measured = os.path.join(d, "measured_ours")
+    os.makedirs(measured, exist_ok=True)
+    ctx.run([ctx.bin("peer_slab"), "--action", "measure", "--frames", frames, "--out", measured, "--dp", repr(dp),
+             "--eps", repr(eps)], os.path.join(measured, "measure.log"))
+    ours = peer_io.read_table(os.path.join(ours_dir, f"trace_{tag}.csv"))
+    peer = peer_io.read_table(os.path.join(measured, "trace.csv"))
+    cols = [c for c in ours[0] if c not in ("kinetic", "elastic")]
+    if len(ours) != len(peer) or any(a[c] != b[c] for a, b in zip(ours, peer) for c in cols):
+        raise RuntimeError(f"scene_slab: peer_slab's measure of our own frames differs from the driver's trace ({measured})")
+    os.remove(frames)
+
+
 def run_case(ctx, case, d):
     eps, dp, pysph_variants = case
     common = ["--dp", repr(dp), "--eps", repr(eps)]
@@ -105,10 +140,12 @@ def run_case(ctx, case, d):
     ours_dir = os.path.join(d, "ours")
     os.makedirs(ours_dir, exist_ok=True)
     cmd = [ctx.bin("gray2001_fig8_10_slab"), "--dp", repr(dp), "--runs", repr(eps), "--study-dps", "0", "--out", ours_dir]
-    if ctx.quick:
-        cmd += ["--t-max", "2", "--t-max-eps0", "2"]
+    if ctx.quick:  # a frame at every sample, for the check of the measurement path below
+        cmd += ["--t-max", "2", "--t-max-eps0", "2", "--frame-every", "2", "--frame-every-eps0", "2"]
     env = {k: v for k, v in ctx.env.items() if k != "SPH_RUN_CACHE"}
     ctx.run(cmd, os.path.join(ours_dir, "run.log"), env=env)
+    if ctx.quick:
+        check_measurement_path(ctx, eps, dp, ours_dir, d)
     ssum = next(r for r in peer_io.read_table(os.path.join(ours_dir, "summary.csv")) if math.isclose(float(r["eps"]), eps))
     ours = dict(base, code="ours", variant="ours",
                 version=peer_io.header(os.path.join(ours_dir, "summary.csv")).get("code_version", ""),
@@ -131,6 +168,7 @@ def run_case(ctx, case, d):
         facts = {r["name"]: r["value"] for r in peer_io.read_table(info)}
         v = peer_io.values(os.path.join(measured, "values_peer_slab.csv"))
         row = dict(base, code=code, variant=variant, version=version, particles=int(facts["particles"]),
+                   dt=float(facts.get("dt", s["dt"])),
                    steps=int(facts["steps"]), wall_s=float(facts["wall_s"]), force_evals_per_step=force_evals,
                    blow_up=facts.get("blow_up", "none"), t_last=v["t_last"], complete=int(v["complete"]),
                    **measured_row(eps, os.path.join(measured, "values_peer_slab.csv"), os.path.join(measured, "summary.csv")))
@@ -152,14 +190,18 @@ def run_case(ctx, case, d):
             cmd += ["--max-steps", "30"]  # past t = 2 at dp = 0.128: two frames
         ctx.run(cmd, os.path.join(d, f"pysph_{variant}.log"))
         rows.append(measure("pysph", variant, frames, info, 2, version))
-    variant = f"ulsph_art{eps:g}" if eps > 0 else "ulsph"
-    frames, info = os.path.join(d, f"frames_lammps_{variant}.csv"), os.path.join(d, f"info_lammps_{variant}.csv")
-    cmd = [ctx.py, os.path.join(ctx.root, "experiments", "peers", "lammps_slab.py"), "--layout", layout,
-           "--work", os.path.join(d, f"lammps_{variant}"), "--frames", frames, "--info", info]
-    if ctx.quick:
-        cmd += ["--max-steps", "30"]
-    ctx.run(cmd, os.path.join(d, f"lammps_{variant}.log"))
-    rows.append(measure("lammps", variant, frames, info, 1, ctx.version("lammps")))
+    ctx.run([os.path.join(ctx.root, "tools", "peers", "build_machdyn_ratefix.sh")], os.path.join(d, "build_ratefix.log"))
+    for dt_rule, plugin in LAMMPS_VARIANTS:
+        variant = (f"ulsph_art{eps:g}" if eps > 0 else "ulsph") + ("_ourdt" if dt_rule == "ours" else "") + \
+            ("_ratefix" if plugin == "ratefix" else "")
+        frames, info = os.path.join(d, f"frames_lammps_{variant}.csv"), os.path.join(d, f"info_lammps_{variant}.csv")
+        cmd = [ctx.py, os.path.join(ctx.root, "experiments", "peers", "lammps_slab.py"), "--layout", layout,
+               "--work", os.path.join(d, f"lammps_{variant}"), "--frames", frames, "--info", info, "--dt", dt_rule,
+               "--machdyn-so", os.path.join("build", "peers", PLUGINS[plugin])]
+        if ctx.quick:
+            cmd += ["--max-steps", "160"]  # past t = 2 at LAMMPS's step (0.014 at dp = 0.128): two frames
+        ctx.run(cmd, os.path.join(d, f"lammps_{variant}.log"))
+        rows.append(measure("lammps", variant, frames, info, 1, ctx.version("lammps") + ("+ratefix" if plugin == "ratefix" else "")))
     for r in rows:
         r["particle_steps_per_s"] = r["particles"] * r["steps"] / r["wall_s"] if r["wall_s"] > 0 else nan
     return rows

@@ -350,8 +350,10 @@ std::vector<SlabValue> slab_run_values(const SlabRunResult& r, bool artificial_s
   // fractures" (Sec 7.3): 542 the time the neck has narrowed to ~10 particles, the fracture after it; and ~10
   // particles the neck at t = 542, not at the last moment before parting.
   const auto& s542 = sample_at_time(r.trace, neck_time);
-  return {{"strain_at_t394", s394.strain, "strain of the ends' separation at t = 394, measured from the bands"},
-          {"eps0.3_pieces_at_t394", static_cast<double>(s394.pieces), "pieces at t = 394 (1 = intact)"},
+  // A run that stopped (parted) more than a sample before t = 394 has no value there (a peer's run can: nan).
+  const bool has394 = std::abs(s394.t - 394.0) <= sample_dt;
+  return {{"strain_at_t394", has394 ? s394.strain : NAN, "strain of the ends' separation at t = 394, measured from the bands"},
+          {"eps0.3_pieces_at_t394", has394 ? static_cast<double>(s394.pieces) : NAN, "pieces at t = 394 (1 = intact)"},
           {"eps0.3_fracture_time", r.fracture_time, "the two ends in different pieces (-1: never)"},
           {"eps0.3_clumping_time", r.clumping_time, "first time two free particles were closer than 0.75 dp (-1: never)"},
           {"eps0.3_neck_before_fracture", r.neck_before_fracture, "neck width (cm) at the last sample before the ends parted"},
