@@ -52,6 +52,49 @@ TEST(Slab, NoJitterIsTheLatticeAndABadJitterIsRefused) {
   EXPECT_THROW(scenes::make_slab(bad, 1.0), std::invalid_argument);
 }
 
+// The measurement of a sample is a function of the particle state (what peer_slab feeds a peer's frames to): on
+// the lattice nothing is stretched, narrowed or open; with the right half moved 0.5 to the right the ends have
+// parted between the halves, and the summary dates the parting, the opening and the crack from the samples.
+TEST(Slab, MeterOnTheLatticeAndOnASlabCutInTwo) {
+  const auto slab = scenes::make_slab(small_slab(), 1.0);  // 30 x 10 particles, dp = 0.1, bands 2 columns wide
+  const scenes::SlabGeometry g = scenes::slab_geometry(slab);
+  const scenes::SlabRunSpec spec;
+  scenes::SlabMeter meter(g, spec);
+  const auto whole = meter.measure(0.0, slab.body.x, NAN, NAN);
+  EXPECT_EQ(whole.sample.extension, 0.0);
+  EXPECT_EQ(whole.sample.pieces, 1u);
+  EXPECT_EQ(whole.sample.parted, 0);
+  EXPECT_NEAR(whole.sample.closest, 0.1, 1e-12);
+  EXPECT_NEAR(whole.sample.widest_gap, 0.1, 1e-12);
+  EXPECT_NEAR(whole.sample.neck_width, 1.0, 1e-12);  // 10 rows: y extent 0.9 plus dp
+  EXPECT_TRUE(std::isnan(whole.sample.ke));
+  std::vector<sph::Vec2> cut = slab.body.x;
+  for (std::size_t a = 0; a < cut.size(); ++a)
+    if (g.column[a] >= 15) cut[a].x() += 0.5;
+  const auto apart = meter.measure(1.0, cut, NAN, NAN);
+  EXPECT_NEAR(apart.sample.extension, 0.5, 1e-12);
+  EXPECT_EQ(apart.sample.pieces, 2u);
+  EXPECT_EQ(apart.sample.parted, 1);
+  EXPECT_NEAR(apart.reach_l, 1.45, 1e-12);
+  EXPECT_NEAR(apart.reach_r, 2.05, 1e-12);
+  EXPECT_NEAR(apart.sample.widest_gap, 0.6, 1e-12);
+  EXPECT_NEAR(apart.sample.gap_x, 1.75, 1e-12);
+  const auto sum = scenes::summarise_slab({whole, apart}, spec, 0.1);
+  EXPECT_EQ(sum.fracture_time, 1.0);
+  EXPECT_EQ(sum.first_split_time, 1.0);
+  EXPECT_NEAR(sum.crack_x, 1.75, 1e-12);
+  EXPECT_NEAR(sum.crack_from_junction, 1.3, 1e-12);  // the left piece reaches 1.45, its band edge is at 0.15
+  EXPECT_EQ(sum.neck_before_fracture, whole.sample.neck_width);
+  EXPECT_EQ(sum.opening_time, 1.0);
+  EXPECT_NEAR(sum.opening_from_junction, 1.6, 1e-12);  // 1.75 - 0.15 = 3.35 - 1.75
+  EXPECT_EQ(sum.clumping_time, -1.0);
+  EXPECT_TRUE(std::isnan(sum.onset_time));  // the lattice has no neck, and a parted sample is not an onset
+  EXPECT_TRUE(scenes::slab_stops_at(1.0, 11.0, spec));
+  EXPECT_FALSE(scenes::slab_stops_at(1.0, 10.5, spec));
+  EXPECT_FALSE(scenes::slab_stops_at(-1.0, 100.0, spec));
+  EXPECT_THROW(meter.measure(2.0, std::vector<sph::Vec2>(3, sph::Vec2::Zero()), NAN, NAN), std::invalid_argument);
+}
+
 #include "gray2001/scenes/hexagon_gray.hpp"
 
 TEST(GrayHexagon, MaterialIsHooversLatticeAndAShortRunStaysWholeAndFinite) {

@@ -55,31 +55,14 @@ std::string dp_tag(double dp) {
   return s.str();
 }
 
-// The first sample, before the ends part, whose neck is at most `width` wide (-1: none).
-double first_neck_at_most(const std::vector<scenes::SlabSample>& trace, double width) {
-  for (const auto& m : trace) {
-    if (m.parted) break;
-    if (m.neck_width <= width) return m.t;
-  }
-  return -1;
-}
-
-// The sample closest to time t.
-const scenes::SlabSample& at_time(const std::vector<scenes::SlabSample>& trace, double t) {
-  std::size_t best = 0;
-  for (std::size_t i = 0; i < trace.size(); ++i)
-    if (std::abs(trace[i].t - t) < std::abs(trace[best].t - t)) best = i;
-  return trace[best];
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_fig8_10_slab", "G-fig8", "Gray et al. 2001 Figs 8-10: slab under tension with von Mises plasticity");
   double dp = 0.016, end_accel = 2.5e-6, band = 0.2, t_max_eps0 = 300, t_max = 700;
   sph::GrayParameters scheme = scenes::slab_scheme();  // Sec 7.3: mu = 0.3, the yield 0.03
-  // Where the text's neck is read (Sec 7.3, "at t = 542 ... only ~10 particles thick"): measurement points.
-  const double neck_time = 542, neck_particles = 10;
+  // Where the text's neck is read (Sec 7.3, "only ~10 particles thick"): the resolution study's 10 dp time.
+  const double neck_particles = 10;
   double frame_every_eps0 = 20, frame_every = 50, sample_dt = 2.0;
   std::vector<double> study_dps{0.064, 0.032}, runs{0.0, 0.3};
   d.param("dp", dp, "particle spacing (Sec 7.3: 0.016)").positive();
@@ -122,7 +105,7 @@ int main(int argc, char** argv) {
                                          "crack_x", "crack_from_junction", "opening_time", "opening_from_junction", "neck_before_fracture", "neck_before_fracture_over_dp",
                                          "onset_time", "onset_strain", "strain_at_fracture", "blow_up"});
     auto record = [&](double eps, double spacing, const scenes::SlabRunResult& r) {
-      const double strain_f = r.fracture_time >= 0 ? at_time(r.trace, r.fracture_time).strain : NAN;
+      const double strain_f = r.fracture_time >= 0 ? scenes::sample_at_time(r.trace, r.fracture_time).strain : NAN;
       summary.row(eps, spacing, r.particles, r.steps, r.wall_s, r.clumping_time, r.first_split_time, r.fracture_time, r.crack_x,
                   r.crack_from_junction, r.opening_time, r.opening_from_junction, r.neck_before_fracture, r.neck_before_fracture / spacing, r.onset_time, r.onset_strain,
                   strain_f, r.blow_up);
@@ -197,35 +180,9 @@ int main(int argc, char** argv) {
       const auto& r = result[i];
       write_trace("trace_" + tag + ".csv", r);
       record(eps, dp, r);
-      if (eps == 0) {
-        d.value("eps0_clumping_time", r.clumping_time, "first time two free particles were closer than 0.75 dp (-1: never)");
-        d.value("eps0_fracture_time", r.fracture_time, "the two ends in different pieces (-1: never)");
-        d.value("eps0_first_split_time", r.first_split_time, "first piece broken off (-1: never)");
-        d.value("eps0_opening_time", r.opening_time, "first gap of more than 2 dp between neighbouring columns (-1: never)");
-        d.value("eps0_opening_from_junction", r.opening_from_junction, "distance of that gap from the nearer band edge");
-      } else {
-        if (!r.blow_up.empty()) throw std::runtime_error("eps = 0.3 run blew up: " + r.blow_up);
-        const auto& s394 = at_time(r.trace, 394.0);  // the time of the Fig 10 caption
-        d.value("strain_at_t394", s394.strain, "strain of the ends' separation at t = 394, measured from the bands");
-        d.value("eps0.3_pieces_at_t394", static_cast<double>(s394.pieces), "pieces at t = 394 (1 = intact)");
-        d.value("eps0.3_fracture_time", r.fracture_time, "the two ends in different pieces (-1: never)");
-        d.value("eps0.3_clumping_time", r.clumping_time, "first time two free particles were closer than 0.75 dp (-1: never)");
-        d.value("eps0.3_neck_before_fracture", r.neck_before_fracture,
-                "neck width (cm) at the last sample before the ends parted");
-        d.value("eps0.3_neck_before_fracture_particles", r.neck_before_fracture / dp, "the same in particle spacings");
-        // READING of "at t = 542, the notching reduces the central neck until it is only ~10 particles thick
-        // and it fractures" (Sec 7.3): 542 the time the neck has narrowed to ~10 particles, the fracture
-        // after it; and ~10 particles the neck at t = 542, not at the last moment before parting.
-        d.value("eps0.3_neck_10dp_time", first_neck_at_most(r.trace, neck_particles * dp),
-                "first sample, before parting, with the neck at most 10 dp wide (-1: none)");
-        const auto& s542 = at_time(r.trace, neck_time);
-        d.value("eps0.3_neck_at_t542", std::abs(s542.t - neck_time) <= sample_dt ? s542.neck_width : NAN,
-                "neck width (cm) at t = 542, the time of the text's neck of ~10 particles (nan: the run ended before)");
-        d.value("eps0.3_onset_strain", r.onset_strain, "strain when the neck fell below 0.9 x the median width");
-        d.value("eps0.3_crack_from_centre", std::abs(r.crack_x - 0.5 * std::lround(3.0 / dp) * dp) / 3.0,
-                "|crack x - slab centre| / length at fracture");
-        fracture_main = r.fracture_time;
-      }
+      if (eps > 0 && !r.blow_up.empty()) throw std::runtime_error("eps = 0.3 run blew up: " + r.blow_up);
+      for (const auto& v : scenes::slab_run_values(r, eps > 0, dp, sample_dt)) d.value(v.name, v.value, v.note);
+      if (eps > 0) fracture_main = r.fracture_time;
     }
     // Resolution study of the eps = 0.3 fracture time.
     auto study = d.csv("resolution.csv", {"dp", "particles", "steps", "wall_s", "fracture_time", "neck_before_fracture_over_dp",
@@ -238,7 +195,7 @@ int main(int argc, char** argv) {
       write_trace("trace_eps0.3_" + dp_tag(sdp) + ".csv", r);
       record(0.3, sdp, r);
       study.row(sdp, r.particles, r.steps, r.wall_s, r.fracture_time, r.neck_before_fracture / sdp, r.onset_strain,
-                first_neck_at_most(r.trace, neck_particles * sdp));
+                scenes::first_neck_at_most(r.trace, neck_particles * sdp));
       if (std::abs(sdp - 2 * dp) < 1e-12) {
         coarse_fracture = r.fracture_time;
         coarse_dp = sdp;

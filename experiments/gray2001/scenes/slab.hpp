@@ -5,7 +5,9 @@
 // driven ends no longer connected).
 #pragma once
 
+#include <cmath>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -97,8 +99,81 @@ struct SlabRunResult {
   std::string blow_up;
 };
 
+// ------------------------------------------------------------------------------------------------------------
+// The measurement of one sample, a function of the particle state only, and the run's summary from the samples:
+// run_slab measures our solver's state with them, experiments/peers/peer_slab.cpp a peer's frames.
+
+/// What a sample is measured from besides the positions, fixed over a run: our slab's (slab_geometry) or the same
+/// read back from the layout a peer ran.
+struct SlabGeometry {
+  double dp = 0;
+  sph::Box2 box;                   ///< the domain of the fragment search (particles outside it count as well)
+  double length = 0;               ///< of the particle block (nx dp): strain = extension / length
+  std::vector<long> column;        ///< lattice column of each particle (ours: a % nx)
+  long columns = 0;                ///< nx
+  std::vector<int> band;           ///< -1 left driven band, +1 right driven band, 0 free
+  std::vector<std::size_t> left_band, right_band;  ///< the bands' particles in index order
+  double sep0 = 0;                 ///< separation of the bands' mean x at t = 0
+};
+/// The geometry of a slab as make_slab built it (before any step: sep0 from its positions).
+SlabGeometry slab_geometry(const Slab& slab);
+
+/// One sample and what the summary needs of its instant besides the trace row.
+struct SlabMeasurement {
+  SlabSample sample;
+  double junction_l = NAN, junction_r = NAN;  ///< the left band's largest x, the right band's smallest
+  double reach_l = NAN, reach_r = NAN;        ///< once parted: the left end's piece's largest x, the right one's smallest
+};
+
+/// Measures samples of one run (arrays sized once, for the geometry). `settings` gives the measurement settings
+/// (fracture_link, neck_bin, clump_ratio; the rest is the summary's).
+class SlabMeter {
+ public:
+  SlabMeter(const SlabGeometry& g, const SlabRunSpec& settings);
+  ~SlabMeter();
+  /// The sample of the state at time t: x every particle's position in the geometry's order; ke, ee the
+  /// energies (our solver's; NaN where there is no solver, a peer's frames). Velocities are not needed.
+  SlabMeasurement measure(double t, const std::vector<sph::Vec2>& x, double ke, double ee);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The run's summary from its samples in time order (scenes::run_slab's, and a peer's).
+struct SlabSummary {
+  double first_split_time = -1, fracture_time = -1;
+  double crack_x = NAN, crack_from_junction = NAN, neck_before_fracture = NAN;
+  double onset_strain = NAN, onset_time = NAN;
+  double clumping_time = -1, opening_time = -1, opening_from_junction = NAN;
+};
+SlabSummary summarise_slab(const std::vector<SlabMeasurement>& samples, const SlabRunSpec& settings, double dp);
+
+/// Whether run_slab stops at a sample at time t, the ends having first parted at fracture_time (-1: not yet):
+/// run_after_fracture after the parting (never if run_after_fracture < 0). A peer's frames are read up to it.
+bool slab_stops_at(double fracture_time, double t, const SlabRunSpec& settings);
+
 /// Runs the slab; `on_sample(solver, body, sample)` is called at every sample, after it is recorded.
 using SlabObserver = std::function<void(const sph::GraySolver&, const sph::ElasticBody&, const SlabSample&)>;
 SlabRunResult run_slab(const SlabRunSpec& s, const SlabObserver& on_sample = {}, const std::string& progress_label = "slab");
+
+// ------------------------------------------------------------------------------------------------------------
+// The values the Figs 8-10 driver writes for one of its main runs, from the run's trace and summary: the driver
+// writes them for our runs, experiments/peers/peer_slab.cpp for a peer's.
+
+/// The first sample, before the ends part, whose neck is at most `width` wide (-1: none).
+double first_neck_at_most(const std::vector<SlabSample>& trace, double width);
+/// The sample closest to time t (the first of two equally close).
+const SlabSample& sample_at_time(const std::vector<SlabSample>& trace, double t);
+
+struct SlabValue {
+  std::string name;
+  double value;
+  std::string note;
+};
+/// The eps = 0 run's values (eps0_*) or the eps = 0.3 run's (strain_at_t394, eps0.3_*), in the driver's order;
+/// `dp` the run's spacing, `sample_dt` its sample interval. The eps > 0 run must not have blown up (the driver
+/// refuses it before).
+std::vector<SlabValue> slab_run_values(const SlabRunResult& r, bool artificial_stress, double dp, double sample_dt);
 
 }  // namespace scenes
