@@ -104,7 +104,7 @@ def main():
                          " ours: settings.csv dt (cfl 0.5 h / (c_L + v_end): unstable for smd/ulsph at dp 0.064)")
     ap.add_argument("--max-steps", type=int, default=None, help="quick: stop after this many steps")
     ap.add_argument("--lmp", default="lmp")
-    ap.add_argument("--machdyn-so", default=os.path.join("build", "peers", "machdynplugin.so"),
+    ap.add_argument("--machdyn-so", default=peer_io.machdyn_plugin(),
                     help="the plugin, relative to the repository root or absolute")
     o = ap.parse_args()
     s = peer_io.settings(o.layout)

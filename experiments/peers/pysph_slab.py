@@ -54,7 +54,7 @@ from pysph.sph.solid_mech.hvi import VonMisesPlasticity2D
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import peer_io  # noqa: E402
-from pysph_plate import XSPHVelocity, VelocityGradient2DXSPH, ContinuityXSPH  # noqa: E402  (to move: pysph_gray.py)
+from pysph_gray import XSPHVelocity, VelocityGradient2DXSPH, ContinuityXSPH  # noqa: E402
 
 PLASTICITY = ["pysph", "ours", "pysph_stored", "ours_eval"]
 

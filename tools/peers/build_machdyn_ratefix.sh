@@ -14,12 +14,14 @@
 # (there final - old = dt x 2 G d_dev, the same rate up to round-off).
 #
 # Usage: tools/peers/build_machdyn_ratefix.sh   (after tools/peers/build_machdyn.sh, whose objects and flags it reuses)
-#   env MACHDYN_OBJ: the objects of build_machdyn.sh (default build/peers/machdyn-obj)
-#   env MACHDYN_RATEFIX_OUT: the plugin to write (default build/peers/machdynplugin_ratefix.so)
+#   env MACHDYN_OBJ: the objects of build_machdyn.sh (default machdyn-obj beside its plugin, $MACHDYN_OUT or
+#                    build/peers/machdynplugin.so)
+#   env MACHDYN_RATEFIX_OUT: the plugin to write (default machdynplugin_ratefix.so beside it)
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-OBJ=${MACHDYN_OBJ:-$ROOT/build/peers/machdyn-obj}
-OUT=${MACHDYN_RATEFIX_OUT:-$ROOT/build/peers/machdynplugin_ratefix.so}
+STOCK=${MACHDYN_OUT:-$ROOT/build/peers/machdynplugin.so}  # where build_machdyn.sh left the plugin and its objects
+OBJ=${MACHDYN_OBJ:-$(dirname "$STOCK")/machdyn-obj}
+OUT=${MACHDYN_RATEFIX_OUT:-$(dirname "$STOCK")/machdynplugin_ratefix.so}
 say() { printf 'build_machdyn_ratefix: %s\n' "$*"; }
 die() { printf 'build_machdyn_ratefix: ERROR: %s\n' "$*" >&2; exit 1; }
 [[ -f $OBJ/flags && -f $OBJ/pair_smd_ulsph.o ]] || die "no MACHDYN objects in $OBJ: run tools/peers/build_machdyn.sh first"

@@ -207,7 +207,7 @@ def run_case(ctx, case, d):
         frames, info = os.path.join(d, f"frames_lammps_{variant}.csv"), os.path.join(d, f"info_lammps_{variant}.csv")
         cmd = [ctx.py, os.path.join(ctx.root, "experiments", "peers", "lammps_slab.py"), "--layout", layout,
                "--work", os.path.join(d, f"lammps_{variant}"), "--frames", frames, "--info", info, "--dt", dt_rule,
-               "--machdyn-so", os.path.join("build", "peers", PLUGINS[plugin])]
+               "--machdyn-so", os.path.join(os.path.dirname(peer_io.machdyn_plugin()), PLUGINS[plugin])]
         if ctx.quick:
             cmd += ["--max-steps", "160"]  # past t = 2 at LAMMPS's step (0.014 at dp = 0.128): two frames
         ctx.run(cmd, os.path.join(d, f"lammps_{variant}.log"))
