@@ -14,7 +14,7 @@
 # Only these line forms and '#' comments: the Python reader refuses anything else (Make variables,
 # conditionals, continued lines).
 
-# ---- Cover functions and the stability criterion (library: src/kernels.*, src/interpolation_1d.*) ----
+# ---- Cover functions and the stability criterion (library: src/core/kernels.*, src/total_lagrangian/interpolation_1d.*) ----
 # Ismail 2009 Figs 2.3-2.8: cover functions, normalisation, share of the support with W'' > 0
 TARGETS += I-kern
 I-kern_DRIVERS := ismail2009_fig2_3to2_8_cover_functions
@@ -25,7 +25,7 @@ R_DRIVERS := review_swegle_stability_map
 TARGETS += I-interp
 I-interp_DRIVERS := ismail2009_fig2_10to2_20_interpolation
 
-# ---- Gray, Monaghan & Swift 2001 (src/lattice_sums.*, src/gray_solver.*, experiments/scenes/plate*) ----
+# ---- Gray, Monaghan & Swift 2001 (src/updated_lagrangian/lattice_sums.*, src/updated_lagrangian/gray_solver.*, experiments/scenes/plate*) ----
 # Section 5: dispersion lattice sums
 TARGETS += G-disp
 G-disp_DRIVERS := gray2001_sec5_dispersion
@@ -77,8 +77,8 @@ G-stab-rs_RUN_ARGS := --step-runs
 X_DRIVERS := gray2001_tensile_cures
 BENCH_DRIVERS += bench_gray_scenes
 
-# ---- Hoover, Hoover & Merritt 2004 (src/spam_*, src/rk4.hpp, src/molecular_dynamics.*,
-#      experiments/scenes/hoover2004_hexagon.*). Full-run times on 2 idle cores: H-fig1 ~45 s,
+# ---- Hoover, Hoover & Merritt 2004 (src/spam_*, src/core/rk4.hpp, src/spam/molecular_dynamics.*,
+#      experiments/hoover2004/scenes/hexagon.*). Full-run times on 2 idle cores: H-fig1 ~45 s,
 #      H-fig3 ~15 s, hexagon drivers ~10-60 s each, H-72 ~5-8 min (72 revolutions over 2 threads). ----
 TARGETS += H-fig1 H-fig2 H-fig3 H-fig4 H-fig5 H-fig6 H-fig7 H-gauss H-72
 H-fig1_DRIVERS := hoover2004_fig1_tensile_instability
@@ -91,13 +91,13 @@ H-fig7_DRIVERS := hoover2004_fig7_torque_scaling
 H-gauss_DRIVERS := hoover2004_gauss_multipliers
 H-72_DRIVERS := hoover2004_72_combinations
 # The 72 combinations as jobs of their own (the driver's --list-runs true: each label with '_' for '/'), read back from
-# the store of runs (scenes/hexagon_store.hpp) by the collecting run.
+# the store of runs (hoover2004/scenes/hexagon_store.hpp) by the collecting run.
 H-72_RUNS := sum_v_gauss sum_v_particle_torque sum_v_pair_torque sum_shepard_gauss sum_shepard_particle_torque sum_shepard_pair_torque sum_monaghan_arith_gauss sum_monaghan_arith_particle_torque sum_monaghan_arith_pair_torque cont_v_gauss cont_v_particle_torque cont_v_pair_torque cont_shepard_gauss cont_shepard_particle_torque cont_shepard_pair_torque cont_monaghan_arith_gauss cont_monaghan_arith_particle_torque cont_monaghan_arith_pair_torque sum_v_gauss_visc sum_v_particle_torque_visc sum_v_pair_torque_visc sum_shepard_gauss_visc sum_shepard_particle_torque_visc sum_shepard_pair_torque_visc sum_monaghan_arith_gauss_visc sum_monaghan_arith_particle_torque_visc sum_monaghan_arith_pair_torque_visc cont_v_gauss_visc cont_v_particle_torque_visc cont_v_pair_torque_visc cont_shepard_gauss_visc cont_shepard_particle_torque_visc cont_shepard_pair_torque_visc cont_monaghan_arith_gauss_visc cont_monaghan_arith_particle_torque_visc cont_monaghan_arith_pair_torque_visc sum_v_gauss_approach sum_v_particle_torque_approach sum_v_pair_torque_approach sum_shepard_gauss_approach sum_shepard_particle_torque_approach sum_shepard_pair_torque_approach sum_monaghan_arith_gauss_approach sum_monaghan_arith_particle_torque_approach sum_monaghan_arith_pair_torque_approach cont_v_gauss_approach cont_v_particle_torque_approach cont_v_pair_torque_approach cont_shepard_gauss_approach cont_shepard_particle_torque_approach cont_shepard_pair_torque_approach cont_monaghan_arith_gauss_approach cont_monaghan_arith_particle_torque_approach cont_monaghan_arith_pair_torque_approach sum_v_gauss_visc_approach sum_v_particle_torque_visc_approach sum_v_pair_torque_visc_approach sum_shepard_gauss_visc_approach sum_shepard_particle_torque_visc_approach sum_shepard_pair_torque_visc_approach sum_monaghan_arith_gauss_visc_approach sum_monaghan_arith_particle_torque_visc_approach sum_monaghan_arith_pair_torque_visc_approach cont_v_gauss_visc_approach cont_v_particle_torque_visc_approach cont_v_pair_torque_visc_approach cont_shepard_gauss_visc_approach cont_shepard_particle_torque_visc_approach cont_shepard_pair_torque_visc_approach cont_monaghan_arith_gauss_visc_approach cont_monaghan_arith_particle_torque_visc_approach cont_monaghan_arith_pair_torque_visc_approach
 H-72_RUN_ARGS := --step-runs
 BENCH_DRIVERS += bench_hexagon
 
-# ---- Ismail 2009 total Lagrangian SPH (src/sph_matrices.*, src/boundary_correction.*,
-#      src/total_lagrangian_{1d,2d}.*, src/materials.*) ----
+# ---- Ismail 2009 total Lagrangian SPH (src/total_lagrangian/sph_matrices.*, src/total_lagrangian/boundary_correction.*,
+#      src/total_lagrangian_{1d,2d}.*, src/core/materials.*) ----
 # Figs 5.1-5.2: neo-Hookean plane-strain T11(l1) curves
 TARGETS += I-nh
 I-nh_DRIVERS := ismail2009_fig5_1to5_2_neohookean_curves

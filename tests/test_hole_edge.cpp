@@ -1,5 +1,5 @@
 // Issue 15 (b): the sheet's mass-proportional damping is chosen as the least that holds the ghost-reflection
-// closure's corner mode at the finest resolution, twice its undamped growth rate, with 10% (scenes/hole.hpp; the
+// closure's corner mode at the finest resolution, twice its undamped growth rate, with 10% (ismail2009/scenes/hole.hpp; the
 // I-hole row damping_over_least_finest). That rests on damping c taking c/2 off the mode's rate: u'' = J u - c u'
 // has the roots s = -c/2 +- sqrt(lambda + c^2/4), so Re s = rate - c/2 + c^2 rate / (8 |lambda|) + ..., a correction
 // of ~1e-3 omega here. Tested on the resolution driver's linear edge run (Hooke, 1% of the load, no control,

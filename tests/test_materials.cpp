@@ -1,4 +1,4 @@
-// Material laws (src/materials.hpp): neo-Hookean stress against its strain energy, objectivity, symmetry,
+// Material laws (src/core/materials.hpp): neo-Hookean stress against its strain energy, objectivity, symmetry,
 // the stress-free reference state, the small-strain limit against Hooke's law, plane strain against 3D,
 // the elastic constants and wave speeds against the numbers Ismail 2009 states, and the von Mises radial
 // return (on the surface after return, unchanged inside, objective, idempotent).

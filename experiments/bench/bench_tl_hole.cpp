@@ -1,4 +1,4 @@
-// Scene benchmark: the Ismail 2009 Section 5.4.4 sheet with a hole (scenes/ismail_hole.hpp, same CHOSEN
+// Scene benchmark: the Ismail 2009 Section 5.4.4 sheet with a hole (ismail2009/scenes/hole.hpp, same CHOSEN
 // parameters as ismail2009_fig5_13to5_15_hole.cpp) at increasing resolution, up to the study's 201 x 201. Writes <out>/bench_tl_hole.csv
 // with the common bench columns; the SPH matrices, ghost interpolation rows and the sparse LU factorisations of
 // the boundary systems are reported in their own rows (variant = matrix_build, steps = 0), the time loop in

@@ -7,7 +7,7 @@
 // Parameters (source):
 //   slab 3 x 1, bands 0.2 wide at each end, acceleration 5e-6 along the long axis   (Sec 7.3)
 //   mu = 0.3, von Mises yield strength 0.03 (uniaxial, sqrt(3 J2) = Y with the plane-strain S_zz:
-//     src/materials.hpp section 6)                                                   (Sec 7.3)
+//     src/core/materials.hpp section 6)                                                   (Sec 7.3)
 //   rho0 = c0 = 1, h = 1.5 dp, eps = 0.3, n = 4, XSPH eps = 0.5                        (Secs 3, 5, 7)
 //   READING of the acceleration: "the ends move a distance 2.5e-6 t^2 ... if t equals 400 the ends will move
 //     a distance 0.4 cm, and the strain will be 0.13". Each band accelerating at 5e-6 would move each end

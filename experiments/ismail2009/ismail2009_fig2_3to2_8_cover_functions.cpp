@@ -5,7 +5,7 @@
 // 4.7.1: 67% for the 1D cubic B-spline, 82% for "the one dimensional mollifier cover function").
 //
 // Parameters (source):
-//   kernels     src/kernels.hpp (r = |x - x'|/h, eq 2.12; support 1 for Lucy and the mollifiers, 2 for
+//   kernels     src/core/kernels.hpp (r = |x - x'|/h, eq 2.12; support 1 for Lucy and the mollifiers, 2 for
 //               the cubic B-spline, 3 for the truncated Gaussian)
 //   samples     CHOSEN 2001 points per curve (plots only; the claims use root finding and quadrature)
 //   h           CHOSEN 0.7 for the normalisation integrals: a non-unit h also checks the 1/h^d scaling

@@ -4,7 +4,7 @@
 // The thesis reports a maximum principal stress of about 60 MPa at the hole. Reference: the linear-elastic
 // concentration of this square sheet by finite elements, 3.58 (computed by the resolution driver; Kirsch's 3 for
 // an infinite sheet; Heywood's long-strip formula, 3.23, is written for comparison and is 11% low here).
-// CHOSEN (not in the text; scenes/ismail_hole.hpp): quarter side a = 0.1 m, hole radius R = a/4 (d/W = 0.25,
+// CHOSEN (not in the text; ismail2009/scenes/hole.hpp): quarter side a = 0.1 m, hole radius R = a/4 (d/W = 0.25,
 // W = 2a), rho = 1000 kg/m^3, h = 3.5 ps, dt = 0.3 h/c_L, the traction ramped (sin^2) over two shear transits
 // a/c_T and held, mass-proportional damping 6.5 omega with omega = pi c_T/(4a) so that the sheet 'comes to rest'
 // (the least that holds the boundary closure's edge instability at 201 per side, with 10%: scenes/hole.hpp and

@@ -1,6 +1,6 @@
 // Ismail 2009 (thesis), Section 5.4.4: the resolution study the thesis asks for ('a convergence analysis with
 // increasing numbers of particles should be completed') on the sheet of ismail2009_fig5_13to5_15_hole.cpp
-// (same CHOSEN geometry and load, scenes/ismail_hole.hpp), to 201 x 201 particles on the quarter sheet.
+// (same CHOSEN geometry and load, ismail2009/scenes/hole.hpp), to 201 x 201 particles on the quarter sheet.
 //
 // What limits it, measured (reference/I-hole.csv): the ghost-reflection boundary scheme has a weak instability
 // at the loaded and free edges (a particle-scale sawtooth along an edge, which the plain SPH gradient cannot

@@ -1,6 +1,6 @@
 // Ismail 2009 thesis, Figs 5.1-5.2 (Section 5.1.1): Cauchy stress T11 of the compressible neo-Hookean
 // material against the stretch l1 for a family of fixed l2, plane strain (l3 = 1), nu = 0.3 (Fig 5.1)
-// and nu = 0.49 (Fig 5.2). A consistency check of the material code (src/materials.hpp) and the analytic
+// and nu = 0.49 (Fig 5.2). A consistency check of the material code (src/core/materials.hpp) and the analytic
 // curves the SPH runs of Sections 5.3-5.4 (targets I-nh1d, I-2d) are compared with.
 //
 // T11 is computed two independent ways: the closed form (5.5) coded below, and the library's P(F) (3.64)

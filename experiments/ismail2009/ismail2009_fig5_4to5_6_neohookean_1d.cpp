@@ -4,7 +4,7 @@
 //   Fig 5.5  a 15 mm bar stretched to 90 mm over 30 small-strain transit times, nu = 0.3: T11 at the centre
 //            particle against the static curve T11 = mu (l^2 - 1)/l + lambda ln l / l (eq 5.5, l2 = l3 = 1)
 //   Fig 5.6  the same with nu = 0.49: where does it lose stability (thesis: past a stretch of 3.6)?
-// The analysis (I-nh, src/materials.hpp): for nu = 0.49 P11(l) = T11(l) peaks at l = 3.6307; beyond it the
+// The analysis (I-nh, src/core/materials.hpp): for nu = 0.49 P11(l) = T11(l) peaks at l = 3.6307; beyond it the
 // tangent dP11/dl < 0, the wave speed is imaginary and the 1D problem is ill-posed: any discretisation then
 // amplifies short waves. We test whether a smaller step or slower loading moves the loss of stability.
 // CHOSEN: 151 particles on the 15 mm bar (ps = 0.1 mm), h = 5.5 ps; the left end fixed, the right end's

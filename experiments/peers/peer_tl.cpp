@@ -1,7 +1,7 @@
 // Ismail 2009's total-Lagrangian scenes for independent codes (make peers, issue 44; tools/peers/scene_tl.py), and
 // our measurement of the records they return.
 //
-//   --scene stress_wave  the 2D strip of Section 5.4.2 (Figs 5.7-5.9; I-2d), scenes/wave_2d.hpp: --kind stress
+//   --scene stress_wave  the 2D strip of Section 5.4.2 (Figs 5.7-5.9; I-2d), ismail2009/scenes/wave_2d.hpp: --kind stress
 //                        (free sides; the thesis expects the bar speed sqrt(E/rho), a plane-strain code the plate
 //                        speed sqrt(E/(rho (1 - nu^2)))) or strain (sides held transversely: c_L)
 //     --action layout    layout.csv: our real particles (x, y, m, rho), the components our body holds (held_x,
@@ -13,7 +13,7 @@
 //                        measures them with scenes::measure_wave, the function our driver uses: values_peer_tl.csv.
 //     --action ours      runs our strip (scenes::run_wave_2d, as the driver) and writes its values and records
 //                        (trace_ours.csv, the peer's format) with the run's particles, steps and wall time.
-//   --scene hole         the quarter sheet with a hole of Section 5.4.4 (Figs 5.13-5.15; I-hole), scenes/hole.hpp: run
+//   --scene hole         the quarter sheet with a hole of Section 5.4.4 (Figs 5.13-5.15; I-hole), ismail2009/scenes/hole.hpp: run
 //                        to rest under the ramped traction on x = a, symmetry planes x = 0 (u1 = 0) and y = 0 (u2 = 0)
 //     --action layout    layout.csv: our real particles, held_x / held_y (the symmetry planes), load (the edge x = a),
 //                        gauge (0: the particle nearest (0, R), else -1); settings.csv; load.csv (our traction

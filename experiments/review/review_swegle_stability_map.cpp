@@ -1,5 +1,5 @@
 // Review excerpt, Section 5.9 (eq 5.59), with Ismail 2009 Section 4.7.1 (eq 4.48): Swegle's criterion
-// W'' sigma > 0 as a stability map of each cover function of src/kernels.hpp: the sign of W'' against
+// W'' sigma > 0 as a stability map of each cover function of src/core/kernels.hpp: the sign of W'' against
 // r/h, hence which stress sign (tension sigma > 0, compression sigma < 0) makes a neighbour at that
 // distance unstable; typical neighbour distances marked.
 //
@@ -18,7 +18,7 @@
 // (only odd separations move relative to each other); measured the same way on a periodic chain.
 //
 // Parameters (source):
-//   kernels       src/kernels.hpp, 1D, h = 1 (the map is in r/h)
+//   kernels       src/core/kernels.hpp, 1D, h = 1 (the map is in r/h)
 //   h/dp cubic    1.0 (Gray et al. 2001 Section 5.3, the dispersion analysis) and 1.5 (Section 6, "We take
 //                 h/dp to be 1.5"): support 2h
 //   h/dp Ismail   1.5 and 5.5 (thesis Section 2.7: 1.5 is best for square waves, 5.5 "a good compromise"):

@@ -8,7 +8,7 @@
 //   2. F = 1 + X u (eq 4.6 / 5.7);
 //   3. stress at the real particles: Hooke T11 = C eps (4.23: C = lambda + 2 mu for 1D strain, or E as in
 //      Algorithm 4.1) or neo-Hookean P11 = mu (F - 1/F) + lambda ln F / F (Algorithm 5.1 line 15 = eq 3.64,
-//      src/materials.hpp); ghost stresses by mirror: even at a fixed end (T_,x = rho a = 0 there), odd about
+//      src/core/materials.hpp); ghost stresses by mirror: even at a fixed end (T_,x = rho a = 0 there), odd about
 //      the applied stress at a traction end (the image construction of the wave solution (4.27));
 //   4. a = (X P) / rho_0 (4.11 / 5.6); 5. central differences (4.4) on the real particles.
 // In 1D the Cauchy stress equals P11 (T = J^-1 P F^T with J = F). TlSolver1D offers the solver contract of

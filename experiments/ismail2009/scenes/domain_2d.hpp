@@ -1,6 +1,6 @@
 // Shared scene code for the 2D total Lagrangian runs of Ismail 2009 Section 5.4 (I-2d, I-hole, bench_tl_hole):
 // a domain on a square lattice (real particles inside, ghosts within one cover outside), and for every ghost
-// the boundary point it mirrors through (src/total_lagrangian_2d.hpp): the nearest piece of boundary whose
+// the boundary point it mirrors through (src/total_lagrangian/boundary_2d.hpp): the nearest piece of boundary whose
 // mirror point lies in the body, else a corner (point reflection).
 #pragma once
 
