@@ -38,7 +38,8 @@ expect:   match        out of tolerance is a FAIL
                        (make peers takes hours; make figures does not run it): otherwise they are skipped and the
                        summary names how many. Each value is a ratio within one case (ours and the peer on the same
                        layout), so cases of different code versions do not mix in a value; the row's note names the
-                       code version of ours that it judges.
+                       code version of ours that it judges, and the checkout's when they differ (make peers takes
+                       hours: a peer row of another version is reported, not refused).
 quick:    no = not checked in --quick mode (the quick run cannot resolve it); anything else = checked.
 settings  (optional column) parameters a row accepts set on the command line, separated by spaces.
 kind, own_band  (columns a file needs only when it has discrepancy rows) see expect.
@@ -49,8 +50,11 @@ driver's completion record timing_<driver>.csv, written last, is missing or of a
 file records parameters set on the command line ('# given = ...') other than the target's own arguments in experiments/targets.mk, --quick in --quick
 mode, and the row's settings; when the file is a --quick run and the check is not; when the file has no
 'given' record (results older than it: rerun); and when the values files of one target come from different
-code versions (stale results mixed with new ones). A reproduced value that is not finite FAILs every row,
-a discrepancy row too.
+code versions (stale results mixed with new ones), and when a values file is not of the checkout's code version
+(git describe, as the build records it: stale results; --any-version checks old results on purpose, --code-version
+names another). The quantities a row reads besides its own (a reading's alternative, an end of its own band) go
+through the same refusals and must be finite. A reproduced value that is not finite FAILs every row, a
+discrepancy row too.
 
 The targets are those declared in experiments/targets.mk: a reference file of an undeclared target, or a
 declared target without its reference file, stops the check (exit 1) before anything is compared.
@@ -64,12 +68,14 @@ import csv
 import glob
 import math
 import os
+import subprocess
 import sys
 
 import pandas as pd
 
 sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "experiments"))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "experiments"))
 import targets as declaration  # noqa: E402  (experiments/targets.py: the reader of experiments/targets.mk)
 
 OUT_COLUMNS = ["target", "quantity", "published", "reproduced", "tolerance", "status", "kind", "source", "note"]
@@ -292,7 +298,7 @@ def load_peer_values(results_dir):
     return values, None
 
 
-def check_peer_row(row, peer_values, why_not):
+def check_peer_row(row, peer_values, why_not, checkout=None):
     q, published, tol, compare = row["quantity"], float(row["published"]), float(row["tolerance"] or 0), row["compare"]
     reproduced, version = peer_values.get(q, (None, ""))
     out = {"target": row["target"], "quantity": q, "published": row["published"], "kind": "peer",
@@ -306,7 +312,8 @@ def check_peer_row(row, peer_values, why_not):
         return {**out, "status": "FAIL", "note": "the peer's or our value is not finite"}
     ok = within(compare, reproduced, published, tol)
     note = row["why_tolerance"] if ok else f"out of tolerance: our implementation and the peer's differ; {row['why_tolerance']}"
-    return {**out, "status": "PASS" if ok else "FAIL", "note": f"{note} [ours at {version}]"}
+    other = f"; the checkout is {checkout}: make peers --force reruns them" if checkout and version != checkout else ""
+    return {**out, "status": "PASS" if ok else "FAIL", "note": f"{note} [ours at {version}{other}]"}
 
 
 def load_values(results_dir):
@@ -351,14 +358,28 @@ def mixed_versions(sources):
     return {t: sorted(v) for t, v in versions.items() if len(v) > 1}
 
 
-def refusal(row, source, allowed, quick_mode, mixed):
-    """Why a value must not be checked against this row (None if it may)."""
+def checkout_version():
+    """The code version of this checkout, as the build records it (cmake/version.cmake: git describe)."""
+    try:
+        out = subprocess.run(["git", "describe", "--always", "--dirty", "--abbrev=12"], cwd=ROOT, capture_output=True,
+                             text=True)
+        return out.stdout.strip() if out.returncode == 0 and out.stdout.strip() else "unknown (not a git checkout)"
+    except OSError:
+        return "unknown (not a git checkout)"
+
+
+def refusal(row, source, allowed, quick_mode, mixed, checkout=None):
+    """Why a value must not be checked against this row (None if it may). checkout: the code version the results
+    must be of (None: any)."""
     target = row["target"]
     unfinished = source.incomplete()
     if unfinished:
         return unfinished
     if target in mixed:
         return f"values of {target} from different code versions ({', '.join(mixed[target])}): stale results, rerun the target"
+    if checkout is not None and source.code_version != checkout:
+        return (f"{source.path} is of code version {source.code_version}, the checkout is {checkout}: stale results, "
+                f"rerun them (make figures), or check them on purpose with --any-version")
     if source.given is None:
         return f"{source.path} does not record which parameters were set (results older than the check): rerun"
     if source.quick and not quick_mode:
@@ -410,7 +431,21 @@ def own_value_bounded(row, reproduced, compare, tol, values):
     return within(mode, reproduced, a, tol if tol else 1e-9), f"{a:g} ({describe_tolerance(mode, tol)})"
 
 
-def check_row(row, values, sources, allowed, quick_mode, mixed, unreadable=None):
+def quantity_refusal(row, name, values, sources, allowed, quick_mode, mixed, checkout):
+    """Why a quantity other than the row's own (its reading's alternative, or an end of its band) must not be used:
+    the refusals of its own values file, and a value that is not finite; None if it may."""
+    key = (row["target"], name)
+    if key not in values:
+        return None  # reported by the caller as not computed
+    why = refusal(row, sources[key], allowed, quick_mode, mixed, checkout)
+    if why:
+        return f"'{name}' refused: {why}"
+    if not math.isfinite(values[key]):
+        return f"'{name}' = {values[key]} is not finite"
+    return None
+
+
+def check_row(row, values, sources, allowed, quick_mode, mixed, unreadable=None, checkout=None):
     target, q = row["target"], row["quantity"]
     published, tol, compare = float(row["published"]), float(row["tolerance"] or 0), row["compare"]
     reproduced = values.get((target, q))
@@ -420,7 +455,7 @@ def check_row(row, values, sources, allowed, quick_mode, mixed, unreadable=None)
     if reproduced is None:
         why = "; ".join((unreadable or {}).get(target, [])) or "driver did not write it"
         return {**out, "status": "FAIL", "note": f"no reproduced value ({why})"}
-    why = refusal(row, sources[(target, q)], allowed, quick_mode, mixed)
+    why = refusal(row, sources[(target, q)], allowed, quick_mode, mixed, checkout)
     if why:
         return {**out, "status": "FAIL", "note": f"refused: {why}"}
     if not math.isfinite(reproduced):
@@ -436,6 +471,11 @@ def check_row(row, values, sources, allowed, quick_mode, mixed, unreadable=None)
     # The discrepancy must be explained by checks that can themselves fail: our own value inside the band
     # the analysis predicts, and, for a reading, the same number under that reading.
     kind = row["kind"]
+    band_names = [b[1] for b in (parse_band(row["own_band"]) or ()) if b[1]]
+    for name in band_names + ([row["alt_quantity"]] if kind == "reading" and row["alt_quantity"] else []):
+        why = quantity_refusal(row, name, values, sources, allowed, quick_mode, mixed, checkout)
+        if why:
+            return {**out, "status": "FAIL", "kind": kind, "note": why}
     bounded, band = own_value_bounded(row, reproduced, compare, tol, values)
     if not bounded:
         return {**out, "status": "FAIL", "kind": kind,
@@ -465,7 +505,12 @@ def main():
     ap.add_argument("--reference", default=os.path.dirname(os.path.abspath(__file__)))
     ap.add_argument("--quick", action="store_true", help="skip rows marked quick=no")
     ap.add_argument("--targets", nargs="*", help="only these targets")
+    ap.add_argument("--code-version", default=None,
+                    help="the code version the results must be of (default: this checkout's, git describe)")
+    ap.add_argument("--any-version", action="store_true",
+                    help="check results of another code version than the checkout's, on purpose (e.g. an archive)")
     args = ap.parse_args()
+    checkout = None if args.any_version else (args.code_version or checkout_version())
 
     ref = load_reference(args.reference)
     values, sources, unreadable = load_values(args.results)
@@ -481,9 +526,10 @@ def main():
             if peer_values is None:
                 skipped_peer.append(f"{r['target']}/{r['quantity']}")
             else:
-                rows.append(check_peer_row(r, peer_values, peers_refused))
+                rows.append(check_peer_row(r, peer_values, peers_refused, checkout))
             continue
-        rows.append(check_row(r, values, sources, arguments.get(r["target"], set()), args.quick, mixed, unreadable))
+        rows.append(check_row(r, values, sources, arguments.get(r["target"], set()), args.quick, mixed, unreadable,
+                              checkout))
     out_path = os.path.join(args.results, "check.csv")
     os.makedirs(args.results, exist_ok=True)
     with open(out_path, "w", newline="") as f:

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """reference/check.py fails or refuses what it must: a NaN, a missing values file, a missing row, a parameter
-set on the command line that nothing names, a stale code version, a --quick run checked as a full one,
+set on the command line that nothing names, a stale code version (mixed in a target, or not the checkout's; a
+reading's alternative or a band end too, and one that is not finite), a --quick run checked as a full one,
 results that do not record their settings, and a run that did not complete (no completion record); a peer row
 (ours against an independent code) out of tolerance, missing, not finite or unreadable; and passes the same values when nothing is wrong (so that each
 failure below is the one it names, not a broken fixture). A malformed reference file (a missing column, a
@@ -57,9 +58,11 @@ def write_values(folder, rows, name="values_fixture.csv", version="abc123", give
             w.writerow([q, repr(v), "fixture"])
 
 
-def run_check(folder, quick=False):
-    """(exit code, {quantity: (status, note)}) of check.py on the fixture's target."""
-    cmd = [sys.executable, CHECK, "--results", folder, "--targets", TARGET] + (["--quick"] if quick else [])
+def run_check(folder, quick=False, version="abc123"):
+    """(exit code, {quantity: (status, note)}) of check.py on the fixture's target, the checkout taken to be of code
+    version `version` (the fixture's; None: --any-version)."""
+    cmd = [sys.executable, CHECK, "--results", folder, "--targets", TARGET] + (["--quick"] if quick else []) + \
+        (["--code-version", version] if version else ["--any-version"])
     out = subprocess.run(cmd, capture_output=True, text=True)
     path = os.path.join(folder, "check.csv")
     table = pd.read_csv(path, dtype=str, keep_default_na=False) if os.path.exists(path) else pd.DataFrame()
@@ -121,7 +124,14 @@ class CheckRefuses(unittest.TestCase):
         half = len(self.rows) // 2
         write_values(self.dir, self.rows[:half], name="values_one.csv", version="new111")
         write_values(self.dir, self.rows[half:], name="values_two.csv", version="old000")
-        self.assert_every_row_fails_saying(*run_check(self.dir), "different code versions", "old000")
+        self.assert_every_row_fails_saying(*run_check(self.dir, version="new111"), "different code versions", "old000")
+
+    def test_results_of_another_version_than_the_checkout_are_refused_unless_asked(self):
+        write_values(self.dir, self.rows, version="old000")
+        self.assert_every_row_fails_saying(*run_check(self.dir, version="new111"), "old000", "the checkout is new111",
+                                           "--any-version")
+        code, st = run_check(self.dir, version=None)
+        self.assertEqual(code, 0, st)
 
     def test_quick_run_is_refused_as_full_but_checked_as_quick(self):
         write_values(self.dir, self.rows, given="quick", quick=True)
@@ -202,6 +212,22 @@ class DiscrepancyContract(unittest.TestCase):
         self.assertEqual(out["status"], "FAIL")
         self.assertIn("does not reproduce", out["note"])
         self.assertEqual(check_one(row, {("T", "q"): 12.0})["status"], "FAIL")  # the reading not computed
+
+    def test_a_reading_or_a_band_end_that_is_not_finite_or_refused_fails(self):
+        row = discrepancy_row(kind="reading", alt_quantity="q_alt")
+        out = check_one(row, {("T", "q"): 12.0, ("T", "q_alt"): math.nan})
+        self.assertEqual(out["status"], "FAIL")
+        self.assertIn("'q_alt' = nan is not finite", out["note"])
+        out = check_one(discrepancy_row(own_band="theory.."), {("T", "q"): 12.0, ("T", "theory"): math.inf})
+        self.assertEqual(out["status"], "FAIL")
+        self.assertIn("not finite", out["note"])
+        # a reading of another code version than the checkout's is refused as a primary value is
+        src = check.Source("T/values.csv", {"code_version": "x", "given": ""}, {"code_version": "x"})
+        old = check.Source("T/alt.csv", {"code_version": "y", "given": ""}, {"code_version": "y"})
+        out = check.check_row(row, {("T", "q"): 12.0, ("T", "q_alt"): 10.0}, {("T", "q"): src, ("T", "q_alt"): old},
+                              set(), False, {}, checkout="x")
+        self.assertEqual(out["status"], "FAIL")
+        self.assertIn("'q_alt' refused", out["note"])
 
     def test_a_nan_fails_a_discrepancy_row_even_when_its_reading_holds(self):
         row = discrepancy_row(kind="reading", alt_quantity="q_alt")
