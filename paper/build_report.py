@@ -105,6 +105,40 @@ def peers_html(results):
     return "".join(out)
 
 
+def driver_seconds(path):
+    """{target: seconds of driver time} from results/timings.csv (a split target's runs, labelled T/<run>, summed into T)."""
+    out = {}
+    if os.path.exists(path):
+        for _, r in pd.read_csv(path, dtype=str, keep_default_na=False).iterrows():
+            t = r["target"].split("/")[0]
+            out[t] = out.get(t, 0.0) + float(r["wall_s"] or 0)
+    return out
+
+
+def overview_html(targets, check, seconds):
+    """The table at the top: every target with its title, its rows by status, and its driver time, each linked to
+    its section."""
+    head = ("<tr><th>target</th><th>what</th><th>work</th><th>rows</th><th>PASS</th><th>DISCREPANCY (the paper's / "
+            "open)</th><th>FAIL</th><th>peer rows</th><th>driver time</th></tr>")
+    body = []
+    for _, t in targets.iterrows():
+        rows = check[check.target == t.target]
+        own = rows[rows.get("kind", pd.Series(dtype=str)) != "peer"] if len(rows) else rows
+        peer = rows[rows.get("kind", pd.Series(dtype=str)) == "peer"] if len(rows) else rows
+        disc = own[own.status == "DISCREPANCY"] if len(own) else own
+        paper = int((disc["kind"].map(reference_check.KINDS) == "paper").sum()) if len(disc) else 0
+        fail = int((own.status == "FAIL").sum()) if len(own) else 0
+        colour = STATUS_COLOUR["FAIL"] if fail else STATUS_COLOUR["DISCREPANCY"] if len(disc) else STATUS_COLOUR["PASS"]
+        secs = seconds.get(t.target)
+        cells = [f'<a href="#{t.target}"><b style="color:{colour}">{html.escape(t.target)}</b></a>', html.escape(t.title),
+                 html.escape(t.work.split(",")[0]), str(len(own)), str(int((own.status == "PASS").sum()) if len(own) else 0),
+                 f"{paper} / {len(disc) - paper}", str(fail),
+                 f"{int((peer.status == 'PASS').sum())}/{len(peer)} PASS" if len(peer) else "",
+                 f"{secs:.0f} s" if secs is not None else ""]
+        body.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
+    return f"<table>{head}{''.join(body)}</table>"
+
+
 def report_targets(path):
     """paper/targets.csv's rows in the order of experiments/targets.mk; exits on any mismatch between the two."""
     try:
@@ -159,6 +193,7 @@ the same number, computed and checked, reproduces it, or the paper's own closed 
 row that does not hold.</p>
 <p class="summary">{len(check)} checks: {counts.get('PASS', 0)} PASS, {counts.get('DISCREPANCY', 0)} DISCREPANCY,
 {counts.get('FAIL', 0)} FAIL; of the discrepancies {kinds.get('paper', 0)} the paper's, {kinds.get('open', 0)} open.</p>"""]
+    parts.append("<h2>The targets</h2>" + overview_html(targets, check, driver_seconds(os.path.join(args.results, "timings.csv"))))
     parts.append("<h2>Contents</h2><ul>" + "".join(
         f'<li><a href="#{t.target}">{html.escape(t.target)}: {html.escape(t.title)}</a></li>' for _, t in targets.iterrows())
                  + '<li><a href="#peers">Independent codes</a></li><li><a href="#timings">Run times</a></li></ul>')
