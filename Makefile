@@ -37,7 +37,7 @@ ORDERED = $(filter $(TARGETS),$(LONGEST_FIRST)) $(filter-out $(LONGEST_FIRST),$(
 DONE    = $(foreach t,$(ORDERED),$(RESULTS)/$(t)/.done)
 FIGS    = $(foreach t,$(ORDERED),$(FIGURES)/$(t).png)
 
-.PHONY: all figures test sanitize check paper bench bench-ab bench-peer peers peers-quick deps build build-drivers configure ctest results plots quick clean help timings \
+.PHONY: all figures test sanitize check paper status-table bench bench-ab bench-peer peers peers-quick deps build build-drivers configure ctest results plots quick clean help timings \
         check-targets list-targets list-runs archive verify-archive test-paraview
 .DEFAULT_GOAL := help
 
@@ -150,7 +150,8 @@ figures: deps build-drivers
 	  $(MAKE) --no-print-directory timings; \
 	  $(PY) paper/build_report.py --results $(RESULTS) --figures $(FIGURES) --reference reference \
 	    --out paper/build/index.html || status=1; \
-	  echo "make figures: $$(( $$(date +%s) - $$(cat $(RESULTS)/.figures_start) )) s after the build"; exit $$status
+	  echo "make figures: $$(( $$(date +%s) - $$(cat $(RESULTS)/.figures_start) )) s after the build"; \
+	  $(PY) tools/status_table.py --results $(RESULTS) --check || true; exit $$status
 
 # results/timings.csv: every driver's timing_<driver>.csv (target, driver, wall seconds, particle-steps,
 # threads, particle-steps reused from stored runs; written by the driver frame), merged, with the totals.
@@ -158,6 +159,11 @@ timings:
 	@$(PY) tools/timings.py --results $(RESULTS)
 
 all: figures
+
+# README.md's table of the targets and their check status, from the check of the last full run (tools/status_table.py);
+# make figures says when the README's table no longer agrees with its check.
+status-table:
+	$(PY) tools/status_table.py --results $(RESULTS) --write
 
 check:
 	$(PY) reference/check.py --results $(RESULTS) $(CHECK_FLAGS)
