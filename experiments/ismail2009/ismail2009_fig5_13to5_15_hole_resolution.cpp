@@ -67,6 +67,7 @@
 #include "frame/run_jobs.hpp"
 #include "ismail2009/scenes/fem_hole.hpp"
 #include "ismail2009/scenes/hole.hpp"
+#include "ismail2009/scenes/hole_files.hpp"
 
 // Richardson extrapolation of the smoothed (0, R) stress S(n) from the finest three runs whose spacings halve
 // ((n - 1) doubling: 41, 81, 161 of the default study): the observed order p, the converged value S_inf, and
@@ -129,8 +130,8 @@ int main(int argc, char** argv) {
       if (!d.given("edge-n")) edge_ns = {21};
       if (!d.given("edge-variants-n")) edge_n = 21;
     }
-    // The study's runs, named (the unit of a job: Makefile run_rules, experiments/targets.mk I-hole_RUNS). Every
-    // run is stepped (or served by the store) here, before the outputs, which are then written in the study's order.
+    // The study's runs, named (the unit of a job: Makefile run_rules). Every run is stepped here (or read from its
+    // run job's folder, --runs-from) before the outputs, which are then written in the study's order.
     const auto linear_edge = scenes::linear_edge_run;  // issue 15 (b): Hooke at 1%, undamped, no control, 12/omega
     const bool edges = !edge_ns.empty() && edge_ns.front() != 0;
     scenes::HoleParams e = p;  // the edge series' base: the study's sheet, then linear_edge
@@ -172,10 +173,12 @@ int main(int argc, char** argv) {
     std::map<std::string, scenes::HoleResult> result;
     std::vector<std::string> names;
     for (const auto& [name, _] : plan) names.push_back(name);
-    if (jobs.handled(names, [&](std::size_t i) { scenes::run_hole(plan[i].second); })) return;
-    for (const auto& [name, q] : plan) result.emplace(name, scenes::run_hole(q));
-    // wall_s, build_s: of the run where it was stepped (a run job, or this process); a run served from the store
-    // of runs reports the times the stepping run stored.
+    if (jobs.handled(names, [&](std::size_t i) { scenes::write_hole_run(d, "hole", scenes::run_hole(plan[i].second)); }))
+      return;
+    for (const auto& [name, q] : plan)
+      result.emplace(name, jobs.result(name, [](const sph::RunFolder& f) { return scenes::read_hole_run(f, "hole"); },
+                                       [&q = q] { return scenes::run_hole(q); }));
+    // wall_s, build_s: of the run where it was stepped (its run job, or this process).
     auto out = d.csv("resolution.csv", {"series", "n", "hourglass", "law", "traction_MPa", "particles", "steps", "wall_s", "build_s",
                                         "sigma1_hole_top_MPa", "peak_sigma1_MPa", "peak_sigma1_dynamic_MPa",
                                         "smoothed_sigma1_hole_top_MPa", "zigzag", "settle_change", "speed_rise", "rest_speed_ratio", "growth_rate", "fastest_X", "fastest_Y"});
