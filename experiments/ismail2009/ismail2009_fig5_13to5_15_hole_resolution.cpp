@@ -143,7 +143,15 @@ int main(int argc, char** argv) {
     };
     for (int n : ns) { auto q = p; q.n = n; plan_run("controlled_n" + std::to_string(n), q); }
     for (int n : plain_ns) { auto q = p; q.n = n; q.hourglass = 0; plan_run("plain_n" + std::to_string(n), q); }
-    for (double g : gammas) { auto q = p; q.n = gamma_n; q.hourglass = g; plan_run("gamma_g" + sph::format_number(g), q); }
+    // A gamma of the study's own (or 0) at one of its n is that controlled (or plain) run: named once, read twice.
+    std::map<std::string, std::string> same_as;
+    auto among = [](const std::vector<int>& v, int n) { return std::find(v.begin(), v.end(), n) != v.end(); };
+    for (double g : gammas) {
+      const std::string name = "gamma_g" + sph::format_number(g);
+      if (g == p.hourglass && among(ns, gamma_n)) same_as[name] = "controlled_n" + std::to_string(gamma_n);
+      else if (g == 0 && among(plain_ns, gamma_n)) same_as[name] = "plain_n" + std::to_string(gamma_n);
+      else { auto q = p; q.n = gamma_n; q.hourglass = g; plan_run(name, q); }
+    }
     if (linear_n > 0) {
       auto q = p;
       q.n = linear_n;
@@ -167,8 +175,9 @@ int main(int argc, char** argv) {
         plan_run(edge_run_name("passes30", eigen_n), q);
       }
     }
-    auto planned = [&](const std::string& name) {  // the plan's entry of `name`, or plan.end()
-      return std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == name; });
+    auto planned = [&](const std::string& name) {  // the plan's entry of `name` (or of the run it is), or plan.end()
+      const std::string& id = same_as.count(name) ? same_as.at(name) : name;
+      return std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == id; });
     };
     std::map<std::string, scenes::HoleResult> result;
     std::vector<std::string> names;
@@ -184,8 +193,8 @@ int main(int argc, char** argv) {
                                         "smoothed_sigma1_hole_top_MPa", "zigzag", "settle_change", "speed_rise", "rest_speed_ratio", "growth_rate", "fastest_X", "fastest_Y"});
     auto hist = d.csv("history.csv", {"series", "n", "hourglass", "t", "smoothed_sigma1_hole_top_MPa", "peak_sigma1_MPa", "max_speed"});
     auto run = [&](const std::string& series, const std::string& name) {
-      const scenes::HoleParams& q = planned(name)->second;
-      const scenes::HoleResult& r = result.at(name);
+      const auto& [id, q] = *planned(name);
+      const scenes::HoleResult& r = result.at(id);
       if (!r.finite)
         throw std::runtime_error("the sheet run became non-finite (" + series + ", n = " + std::to_string(q.n) + ", gamma = " +
                                  sph::format_number(q.hourglass) + ")");
