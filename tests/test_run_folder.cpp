@@ -399,6 +399,7 @@ TEST_F(RunFolders, ARunJobStepsOnlyARunOfItsDriver) {
   });
   EXPECT_EQ(testing::internal::GetCapturedStdout(), "a\nb\n");
   EXPECT_EQ(listed.code, 0);
+  EXPECT_FALSE(fs::exists(runs() / "list" / "timing_test_runs.csv"));  // nothing ran: no completion record
   // Without --runs-from, a run is stepped where it is needed.
   const auto whole = drive({"--out", (root_ / "whole").string()}, [](sph::Driver&, const sph::RunJobs& jobs) {
     EXPECT_FALSE(jobs.folder("a").has_value());

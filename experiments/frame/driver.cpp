@@ -137,8 +137,9 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
     const long long work0 = particle_steps_taken();
     prepare_output();
     body();
-    write_timing(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                 particle_steps_taken() - work0);
+    if (!printing_only_)
+      write_timing(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                   particle_steps_taken() - work0);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << name_ << ": error: " << e.what() << "\n";

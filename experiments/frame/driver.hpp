@@ -90,6 +90,8 @@ class Driver {
   CsvWriter csv(const std::string& filename, std::vector<std::string> columns) const;
   /// Records a reproduced quantity for `make check` (values_<driver>.csv: quantity,value,note).
   void value(const std::string& quantity, double v, const std::string& note = "");
+  /// This run only prints (e.g. --list-runs): no completion record is written, as nothing ran.
+  void printing_only() { printing_only_ = true; }
 
  private:
   /// timing_<driver>.csv in the output directory: the wall time of the run and the particle-steps its time
@@ -108,6 +110,7 @@ class Driver {
   std::filesystem::path out_;
   std::vector<std::pair<std::string, std::function<std::string()>>> recorders_;
   std::unique_ptr<CsvWriter> values_;
+  bool printing_only_ = false;
 };
 
 }  // namespace sph

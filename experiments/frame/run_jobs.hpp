@@ -38,6 +38,7 @@ class RunJobs {
   bool handled(const std::vector<std::string>& names, const std::function<void(std::size_t)>& step) const {
     if (list_) {
       for (const auto& name : names) std::printf("%s\n", name.c_str());
+      d_.printing_only();  // nothing ran: no completion record in --out
       return true;
     }
     if (step_.empty()) return false;
