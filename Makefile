@@ -112,13 +112,13 @@ empty :=
 space := $(empty) $(empty)
 RUNS_MK := $(RESULTS)/.runs/runs$(subst $(space),,$(strip $(DRIVER_FLAGS))).mk
 ifneq ($(filter results plots list-runs $(RESULTS)/% $(FIGURES)/%,$(MAKECMDGOALS)),)
--include $(RUNS_MK)
+include $(RUNS_MK)
 endif
 list_runs = runs=$$($(BIN)/$($(1)_RUN_DRIVER) --list-runs true --out $(@D)/$(1) $($(1)_ARGS) $(DRIVER_FLAGS)) || exit 1; \
 	for r in $$runs; do echo "$(1)_RUNS += $$r"; done;
 $(RUNS_MK): experiments/targets.mk $(foreach t,$(SPLIT),$(BIN)/$($(t)_RUN_DRIVER))
 	@mkdir -p $(@D)
-	@{ $(foreach t,$(SPLIT),$(call list_runs,$(t))) } > $@.tmp && mv $@.tmp $@
+	@($(foreach t,$(SPLIT),$(call list_runs,$(t)))) > $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
 split = $(filter $(1),$(SPLIT))
 run_dones = $(if $(call split,$(1)),$(foreach r,$($(1)_RUNS),$(RESULTS)/.runs/$(1)/$(r)/.done))
 define run_rules
