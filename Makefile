@@ -118,7 +118,7 @@ list_runs = runs=$$($(BIN)/$($(1)_RUN_DRIVER) --list-runs true --out $(@D)/$(1) 
 	for r in $$runs; do echo "$(1)_RUNS += $$r"; done;
 $(RUNS_MK): experiments/targets.mk $(foreach t,$(SPLIT),$(BIN)/$($(t)_RUN_DRIVER))
 	@mkdir -p $(@D)
-	@($(foreach t,$(SPLIT),$(call list_runs,$(t)))) > $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
+	@($(foreach t,$(SPLIT),$(call list_runs,$(t))) true) > $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
 split = $(filter $(1),$(SPLIT))
 run_dones = $(if $(call split,$(1)),$(foreach r,$($(1)_RUNS),$(RESULTS)/.runs/$(1)/$(r)/.done))
 define run_rules
