@@ -2,8 +2,9 @@
 """A split target through the Makefile's own rules (run_rules: a run job per run into results/.runs/T/<run>/, then the
 target's driver with --runs-from) gives the files the same driver gives when it steps every run itself (T_RUN_DRIVER=
 on the command line), value for value (tools/compare_results.py: bit for bit, wall times aside): no field of a run is
-lost on its way through the run job's folder. Quick runs of TARGETS (default G-fig4, the plate with its power
-budget). Then the collecting run again, from a folder whose run job did not complete: refused, naming the file.
+lost on its way through the run job's folder. Quick runs of TARGETS (default G-tab1, a plate row and its trace,
+and H-72, the 72 hexagon runs: ~8 s of CPU in all). Then the collecting run again, from a folder whose run job did
+not complete: refused, naming the file.
 Usage: test_run_jobs.py --build BUILD_DIR [--targets T ...] (ctest passes the build; the drivers must be built)."""
 import argparse
 import glob
@@ -29,7 +30,7 @@ def make(build, results, goals, *overrides):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
-    ap.add_argument("--targets", nargs="+", default=["G-fig4"])
+    ap.add_argument("--targets", nargs="+", default=["G-tab1", "H-72"])
     args = ap.parse_args()
     build = os.path.abspath(args.build)
     declared = {t.name: t for t in targets.read().targets}
@@ -61,7 +62,7 @@ def main():
             driver = os.path.basename(record)[len("timing_"):-len(".csv")]
             ran = subprocess.run([os.path.join(build, "bin", driver), "--quick", "--out", os.path.join(tmp, "again"),
                                   "--runs-from", os.path.join(split, ".runs", t)] + declared[t].args.split(),
-                                 capture_output=True, text=True)
+                                 capture_output=True, text=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
             if ran.returncode == 0 or record not in ran.stderr:
                 failures.append(f"{t}: a run folder without its completion record was not refused by name: "
                                 f"exit {ran.returncode}, {ran.stderr.strip()}")
