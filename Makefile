@@ -30,8 +30,6 @@ include experiments/targets.mk
 # run times at the default resolution, measured; a longest-processing-time-first schedule), then the rest in
 # the order of targets.mk. Only the order changes, never what runs. (G-tab2 first since its same-n reading: ~8x its
 # dp = 0.1 rows, measured on one core of the AMD host on 2026-12-02: ~3200 s of CPU against ~330 s.)
-# G-fig4 and G-wp start before G-tab1: two of Table 1's rows are prefixes of their runs, which the stored-run
-# reuse serves (SPH_RUN_CACHE below; experiments/gray2001/scenes/plate_run_cache.hpp).
 LONGEST_FIRST := G-tab2 G-fig8 G-fig2 I-hole G-fig4 G-wp G-tab1 G-fig5 H-72 G-stab G-stab-rs
 ORDERED = $(filter $(TARGETS),$(LONGEST_FIRST)) $(filter-out $(LONGEST_FIRST),$(TARGETS))
 DONE    = $(foreach t,$(ORDERED),$(RESULTS)/$(t)/.done)
@@ -100,34 +98,46 @@ SRUN_CPUS ?= 1
 SRUN_FLAGS ?=
 launcher = $(if $(filter slurm,$(LAUNCH)),srun --ntasks=1 --cpus-per-task=$(SRUN_CPUS) --job-name=sph-$(1) --quiet $(SRUN_FLAGS) ,$(if $(LAUNCH),$(error LAUNCH=$(LAUNCH): only LAUNCH=slurm or empty)))
 
-# The unit of work. A target that declares T_RUNS (experiments/targets.mk) steps each of those simulation runs
-# as a job of its own: its driver (T_RUN_DRIVER if T has several) with T_RUN_ARGS <run> into
-# $(RESULTS)/.runs/T/<run>/, which leaves the run in the store of runs (SPH_RUN_CACHE); then the target's own
-# driver invocation finds every run there and only collects (bit for bit the numbers stepping gives:
-# experiments/frame/run_store.hpp). So Make runs the runs side by side
-# (RUN_JOBS) and LAUNCH=slurm makes each a Slurm job. The store serves only a clean code version, so from a
-# checkout with uncommitted changes the runs are not split (they would be stepped twice).
-CLEAN_TREE := $(shell git diff --quiet HEAD -- 2>/dev/null && echo yes)
-run_dones = $(if $(CLEAN_TREE),$(foreach r,$($(1)_RUNS),$(RESULTS)/.runs/$(1)/$(r)/.done))
-run_driver = $(or $($(1)_RUN_DRIVER),$($(1)_DRIVERS))
+# The unit of work. A target that declares T_RUN_DRIVER (experiments/targets.mk) has its simulation runs stepped as
+# jobs of their own. The runs are the driver's (--list-runs true, with the target's arguments and DRIVER_FLAGS):
+# $(RUNS_MK) lists them (a line `T_RUNS += <run>` each), generated from the built drivers and read only where runs
+# are made (the goals below: `make figures` and `make quick` make them in a sub-make after the build). A run job is
+# the driver with --step-runs <run> into $(RESULTS)/.runs/T/<run>/, where it leaves the run's results as files with
+# the usual headers and, last, its completion record; then the target's own run of that driver reads them back
+# (--runs-from $(RESULTS)/.runs/T; experiments/frame/run_folder.hpp refuses, by name, a folder that is incomplete or
+# of another code version or other parameters) and steps none. So Make runs the runs side by side (RUN_JOBS) and
+# LAUNCH=slurm makes each a Slurm job. `T_RUN_DRIVER=` on the command line runs T whole.
+SPLIT = $(foreach t,$(TARGETS),$(if $($(t)_RUN_DRIVER),$(t)))
+empty :=
+space := $(empty) $(empty)
+RUNS_MK := $(RESULTS)/.runs/runs$(subst $(space),,$(strip $(DRIVER_FLAGS))).mk
+ifneq ($(filter results plots list-runs $(RESULTS)/% $(FIGURES)/%,$(MAKECMDGOALS)),)
+include $(RUNS_MK)
+endif
+list_runs = runs=$$($(BIN)/$($(1)_RUN_DRIVER) --list-runs true --out $(@D)/$(1) $($(1)_ARGS) $(DRIVER_FLAGS)) || exit 1; \
+	for r in $$runs; do echo "$(1)_RUNS += $$r"; done;
+$(RUNS_MK): experiments/targets.mk $(foreach t,$(SPLIT),$(BIN)/$($(t)_RUN_DRIVER))
+	@mkdir -p $(@D)
+	@($(foreach t,$(SPLIT),$(call list_runs,$(t))) true) > $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
+split = $(filter $(1),$(SPLIT))
+run_dones = $(if $(call split,$(1)),$(foreach r,$($(1)_RUNS),$(RESULTS)/.runs/$(1)/$(r)/.done))
 define run_rules
-$(RESULTS)/.runs/$(1)/$(2)/.done: $(BIN)/$(call run_driver,$(1))
+$(RESULTS)/.runs/$(1)/$(2)/.done: $(BIN)/$($(1)_RUN_DRIVER)
 	@mkdir -p $$(@D)
-	SPH_RUN_CACHE=$(RESULTS)/.run_cache $(call launcher,$(1)-$(2))$(BIN)/$(call run_driver,$(1)) --out $$(@D) $($(1)_ARGS) $(DRIVER_FLAGS) $($(1)_RUN_ARGS) $(2) && touch $$@
+	$(call launcher,$(1)-$(2))$(BIN)/$($(1)_RUN_DRIVER) --out $$(@D) $($(1)_ARGS) $(DRIVER_FLAGS) --step-runs $(2) && touch $$@
 endef
-$(foreach t,$(TARGETS),$(foreach r,$($(t)_RUNS),$(eval $(call run_rules,$(t),$(r)))))
-# make -s list-runs: one line per split target, target;runs (tests/test_slurm.sh counts the jobs with it).
+$(foreach t,$(SPLIT),$(foreach r,$($(t)_RUNS),$(eval $(call run_rules,$(t),$(r)))))
+# make -s list-runs [DRIVER_FLAGS=...]: one line per split target, target;runs (tests/test_slurm.sh counts the jobs with it).
 list-runs:
-	@: $(foreach t,$(TARGETS),$(if $(call run_dones,$(t)),$(info $(t);$($(t)_RUNS))))
+	@: $(foreach t,$(SPLIT),$(info $(t);$(strip $($(t)_RUNS))))
 
-# Drivers -> results/<target>/ -> plots/<target>.py -> figures/<target>.png
+# Drivers -> results/<target>/ -> plots/<target>.py -> figures/<target>.png. A split target's run driver reads its
+# runs from their folders (--runs-from); its other drivers run as usual.
+runs_from = $(if $(and $(call run_dones,$(1)),$(filter $(2),$($(1)_RUN_DRIVER))), --runs-from $(RESULTS)/.runs/$(1))
 define target_rules
-# SPH_RUN_CACHE: the store of runs that several targets need (work done once: a run is stepped once and its
-# prefixes reused, keyed by its full parameter set and code version; the reuse is the reused_particle_steps
-# column of timings.csv).
 $(RESULTS)/$(1)/.done: $(foreach d,$($(1)_DRIVERS),$(BIN)/$(d)) $(call run_dones,$(1))
 	@mkdir -p $$(@D)
-	$(foreach d,$($(1)_DRIVERS),SPH_RUN_CACHE=$(RESULTS)/.run_cache $(call launcher,$(1))$(BIN)/$(d) --out $$(@D) $($(1)_ARGS) $(DRIVER_FLAGS) &&) touch $$@
+	$(foreach d,$($(1)_DRIVERS),$(call launcher,$(1))$(BIN)/$(d) --out $$(@D) $($(1)_ARGS) $(DRIVER_FLAGS)$(call runs_from,$(1),$(d)) &&) touch $$@
 $(FIGURES)/$(1).png: plots/$(1).py plots/plotstyle.py $(RESULTS)/$(1)/.done
 	@mkdir -p $(FIGURES)
 	$(PY) plots/$(1).py --results $(RESULTS)/$(1) --figures $(FIGURES)
@@ -154,7 +164,7 @@ figures: deps build-drivers
 	  $(PY) tools/status_table.py --results $(RESULTS) --check || true; exit $$status
 
 # results/timings.csv: every driver's timing_<driver>.csv (target, driver, wall seconds, particle-steps,
-# threads, particle-steps reused from stored runs; written by the driver frame), merged, with the totals.
+# threads; written by the driver frame), merged, with the totals.
 timings:
 	@$(PY) tools/timings.py --results $(RESULTS)
 
@@ -181,7 +191,7 @@ quick:
 
 test: deps check-targets build ctest quick peers-quick
 
-# A citable archive of one reproduction (tools/archive.py): results (without the store of reusable runs),
+# A citable archive of one reproduction (tools/archive.py): results (with the run jobs' folders),
 # figures, the report, PROVENANCE.json (code version and uncommitted changes, every driver command line, the
 # Debian package versions, compiler, machine) and SHA256SUMS of every file; it prints the tarball's own SHA-256,
 # to cite with it. Of the quick pipeline: make archive RESULTS=results/quick FIGURES=results/quick/figures

@@ -7,8 +7,7 @@ of its own. The reader accepts only the lines the file's header describes and st
 (a Make construct it cannot evaluate would otherwise make Python and Make disagree silently):
 
     TARGETS += T ...                  T_DRIVERS := driver ...            T_ARGS := extra arguments
-    T_RUNS := run names               T_RUN_ARGS := arguments selecting one run (the run's name follows them)
-    T_RUN_DRIVER := the driver that steps the runs (when T has several)
+    T_RUN_DRIVER := the one of T's drivers whose runs are jobs of their own (the runs are its --list-runs)
     BENCH_DRIVERS += driver ...       blank lines, and '#' comments (also after a declaration)
 
 tests/check_targets.py also compares this reading with Make's own (`make -s list-targets`).
@@ -21,7 +20,8 @@ PATH = os.path.join(ROOT, "experiments", "targets.mk")
 
 _NAME = r"[A-Za-z0-9][A-Za-z0-9_.-]*"
 _APPEND = re.compile(r"^(TARGETS|BENCH_DRIVERS)\s*\+=\s*(.*)$")
-_ASSIGN = re.compile(rf"^({_NAME}?)_(DRIVERS|ARGS|RUNS|RUN_ARGS|RUN_DRIVER)\s*:=\s*(.*)$")
+_ASSIGN = re.compile(rf"^({_NAME}?)_(DRIVERS|ARGS|RUN_DRIVER)\s*:=\s*(.*)$")
+_LISTED_RUNS = re.compile(rf"^({_NAME}?)_(RUNS|RUN_ARGS)\s*:=")
 
 
 class DeclarationError(ValueError):
@@ -31,10 +31,10 @@ class DeclarationError(ValueError):
 class Target:
     def __init__(self, name):
         self.name, self.drivers, self.args = name, [], ""
-        self.runs, self.run_args, self.run_driver = [], "", ""  # runs that are jobs of their own (Makefile: run_rules)
+        self.run_driver = ""  # the driver whose runs are jobs of their own (Makefile: run_rules)
 
     def __repr__(self):
-        return f"Target({self.name!r}, drivers={self.drivers!r}, args={self.args!r}, runs={self.runs!r})"
+        return f"Target({self.name!r}, drivers={self.drivers!r}, args={self.args!r}, run_driver={self.run_driver!r})"
 
 
 class Declaration:
@@ -75,12 +75,15 @@ def read(path=PATH):
                     else:
                         bench.append(name)
                 continue
+            if _LISTED_RUNS.match(line):
+                raise DeclarationError(f"{where}:{n}: run names are not declared: the Makefile takes them from the "
+                                       f"driver's --list-runs (declare T_RUN_DRIVER): {line}")
             m = _ASSIGN.match(line)
             if m:
                 assigned.append((n, m.group(1), m.group(2), m.group(3).strip()))
                 continue
             raise DeclarationError(f"{where}:{n}: not a declaration line (TARGETS +=, T_DRIVERS :=, T_ARGS :=, "
-                                   f"BENCH_DRIVERS +=): {line}")
+                                   f"T_RUN_DRIVER :=, BENCH_DRIVERS +=): {line}")
     done = set()
     for n, name, key, value in assigned:
         if name not in targets:
@@ -92,18 +95,11 @@ def read(path=PATH):
             targets[name].drivers = value.split()
         elif key == "ARGS":
             targets[name].args = value
-        elif key == "RUNS":
-            targets[name].runs = value.split()
-        elif key == "RUN_DRIVER":
-            targets[name].run_driver = value
         else:
-            targets[name].run_args = value
+            targets[name].run_driver = value
     for t in targets.values():
         if not t.drivers:
             raise DeclarationError(f"{where}: target {t.name} has no {t.name}_DRIVERS")
-        if t.runs and not t.run_args:
-            raise DeclarationError(f"{where}: target {t.name} declares runs: it needs {t.name}_RUN_ARGS")
-        if t.runs and (t.run_driver not in t.drivers if t.run_driver else len(t.drivers) != 1):
-            raise DeclarationError(f"{where}: target {t.name} declares runs: {t.name}_RUN_DRIVER must name one of its "
-                                   f"drivers (required when it has several)")
+        if t.run_driver and t.run_driver not in t.drivers:
+            raise DeclarationError(f"{where}: {t.name}_RUN_DRIVER must name one of its drivers ({' '.join(t.drivers)})")
     return Declaration(list(targets.values()), bench, path)

@@ -30,9 +30,9 @@ SECOND_DRIVER = "gray2001_table1_2_plate_periods"
 
 
 def make(results, **popen):
-    # G-tab1_RUNS empty: its rows are not run jobs here, so that its own driver run steps them and is interrupted
+    # G-tab1_RUN_DRIVER empty: its rows are not run jobs here, so that its own driver run steps them and is interrupted
     # while it does (as jobs, the row would be stepped before the driver starts, which then only collects it).
-    cmd = ["make", "-s", "-C", ROOT, f"BUILD={BUILD}", f"RESULTS={results}", "DRIVER_FLAGS=--quick", f"{SECOND}_RUNS=",
+    cmd = ["make", "-s", "-C", ROOT, f"BUILD={BUILD}", f"RESULTS={results}", "DRIVER_FLAGS=--quick", f"{SECOND}_RUN_DRIVER=",
            f"{results}/{FIRST}/.done", f"{results}/{SECOND}/.done"]
     # A make of its own, not a sub-make of the `make test` that runs ctest (whose jobserver it cannot reach).
     env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL", "MAKEOVERRIDES")}

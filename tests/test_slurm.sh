@@ -18,10 +18,11 @@ tools/slurm_single_node.sh start
 export SLURM_CONF=$SPH_SLURM_DIR/slurm.conf
 LOG=$SPH_SLURM_DIR/log/slurmctld.log
 before=$(grep -c "_slurm_rpc_allocate_resources JobId=" "$LOG" || true)
-# One job per driver invocation of every target, and one per simulation run of the split targets (list-runs).
-runs=$(( $(make -s list-targets | grep -v '^BENCH_DRIVERS' | awk -F';' '{n += split($2, d, " ")} END {print n}') + \
-         $(make -s list-runs | awk -F';' '{n += split($2, d, " ")} END {print n + 0}') ))
+# One job per driver invocation of every target, and one per simulation run of the split targets (list-runs: the
+# quick runs, as the drivers list them).
 rm -rf results/slurm
+runs=$(( $(make -s list-targets | grep -v '^BENCH_DRIVERS' | awk -F';' '{n += split($2, d, " ")} END {print n}') + \
+         $(make -s RESULTS=results/slurm DRIVER_FLAGS=--quick list-runs | awk -F';' '{n += split($2, d, " ")} END {print n + 0}') ))
 start=$(date +%s)
 OMP_NUM_THREADS=1 make --no-print-directory -j "$(nproc)" RESULTS=results/slurm FIGURES=results/slurm/figures \
   DRIVER_FLAGS=--quick LAUNCH=slurm plots

@@ -5,9 +5,9 @@
     archive.py verify FILE.tar.gz
 
 `create` writes one gzipped tarball holding, under one top-level folder named after the archive:
-  results/      every file of the results directory (the drivers' CSVs and snapshots, check.csv, timings.csv);
-                not the store of reusable runs (.run_cache: intermediate, rebuilt by any rerun) nor Make's
-                markers (.done, .figures_start)
+  results/      every file of the results directory (the drivers' CSVs and snapshots, check.csv, timings.csv, the
+                run jobs' folders under .runs); not Make's markers (.done, .figures_start) nor a store of runs
+                left by versions before issue 45 (.run_cache: binary, intermediate)
   figures/      the figures
   report/       the report (its HTML file)
   PROVENANCE.json   the code version (git commit, whether the checkout had uncommitted changes and which files),

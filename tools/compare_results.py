@@ -8,7 +8,9 @@ describe the run rather than its result (# date, # code_version, and the descrip
 other line must agree: text cells exactly, numeric cells within the relative tolerance (default 0: bit for
 bit, as the drivers print shortest round-trip numbers). Timings are not results and are skipped: the columns
 wall_s, build_s, *_wall_s and particle_steps_per_s, and the rows of a values file whose quantity names one,
-and the drivers' timing_*.csv files (and timings.csv). Prints one line per file that differs (with the
+and the drivers' timing_*.csv files (and timings.csv). Hidden folders are not compared: results/.runs holds the run
+jobs' folders, whose files the collecting runs read into the targets' folders (which are compared), and a tree
+of a version without run jobs has none. Prints one line per file that differs (with the
 largest relative difference and where), the files present on one side only, and a summary; exits 1 if any
 file differs or is missing. Used to show that a refactor or a speed-up changes no result
 (tools/compare_commits.sh runs the drivers of two commits and calls this).
@@ -25,7 +27,8 @@ TIMING = re.compile(r"(^|_)(wall|build)_s$|per_s$")
 
 def csv_files(root):
     out = set()
-    for d, _, files in os.walk(root):
+    for d, dirs, files in os.walk(root):
+        dirs[:] = [x for x in dirs if not x.startswith(".")]
         for f in files:
             if f.endswith(".csv") and not f.startswith("timing"):
                 out.add(os.path.relpath(os.path.join(d, f), root))

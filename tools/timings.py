@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 """Merge the drivers' timing files into <results>/timings.csv and print the table.
 
-Every driver writes <results>/<target>/timing_<driver>.csv (a split target's runs <results>/.runs/<target>/<run>/) (target, driver, wall_s, particle_steps, threads,
-reused_particle_steps: the wall time of its run, the particle-steps its time loops took, and those it took from
-a stored run of another driver or target instead of stepping them: work done once, issue 13). This script
-collects them, sorted by wall time, adds the particle-steps per second, writes <results>/timings.csv and prints
-it with the totals, and the critical path: the drivers' time with one node for every job (make figures LAUNCH=slurm
-on enough nodes; issue 17), the longest chain of a target's runs (side by side, so their longest) and then its own
-driver invocations (one after another).
+Every driver writes <results>/<target>/timing_<driver>.csv (a split target's run jobs into their folders
+<results>/.runs/<target>/<run>/): target, driver, wall_s, particle_steps, threads: the wall time of its run and the
+particle-steps its time loops took. Every particle-step is taken by the process that reports it: a run job steps its
+run, and the run that collects it reads it from its folder and steps none (issue 45; records of older versions carry
+a reused_particle_steps column, the steps a store of runs served instead: not read). This script collects them,
+sorted by wall time, adds the particle-steps per second, writes <results>/timings.csv and prints it with the totals,
+and the critical path: the drivers' time with one node for every job (make figures LAUNCH=slurm on enough nodes;
+issue 17), the longest chain of a target's runs (side by side, so their longest) and then its own driver
+invocations (one after another).
 """
 import argparse
 import csv
@@ -37,27 +39,23 @@ def main():
         return 0
     rows.sort(key=lambda r: -float(r["wall_s"]))
     out = os.path.join(args.results, "timings.csv")
-    cols = ["target", "driver", "wall_s", "particle_steps", "particle_steps_per_s", "threads", "reused_particle_steps"]
-    total = reused_total = 0.0
+    cols = ["target", "driver", "wall_s", "particle_steps", "particle_steps_per_s", "threads"]
+    total = steps_total = 0.0
     with open(out, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(cols)
         for r in rows:
             wall, ps = float(r["wall_s"]), float(r["particle_steps"])
-            reused = float(r.get("reused_particle_steps") or 0)  # absent in records older than the column
             total += wall
-            reused_total += reused
+            steps_total += ps
             w.writerow([r["target"], r["driver"], f"{wall:.3f}", f"{ps:.0f}", f"{ps / wall:.4g}" if wall > 0 else "",
-                        r["threads"], f"{reused:.0f}"])
-    print(f"{'target':10} {'driver':48} {'wall_s':>9} {'particle-steps':>15} {'per s':>10} threads {'reused':>10}")
+                        r["threads"]])
+    print(f"{'target':10} {'driver':48} {'wall_s':>9} {'particle-steps':>15} {'per s':>10} threads")
     for r in rows:
         wall, ps = float(r["wall_s"]), float(r["particle_steps"])
-        reused = float(r.get("reused_particle_steps") or 0)
         rate = f"{ps / wall:.3g}" if wall > 0 and ps > 0 else "-"
-        print(f"{r['target']:10} {r['driver']:48} {wall:9.1f} {ps:15.4g} {rate:>10} {r['threads']:>7} "
-              f"{(f'{reused:.3g}' if reused else '-'):>10}")
-    print(f"timings: {len(rows)} driver runs, {total:.0f} s in the drivers, {reused_total:.4g} particle-steps "
-          f"taken from stored runs instead of stepped -> {out}")
+        print(f"{r['target']:10} {r['driver']:48} {wall:9.1f} {ps:15.4g} {rate:>10} {r['threads']:>7}")
+    print(f"timings: {len(rows)} driver runs, {total:.0f} s in the drivers, {steps_total:.4g} particle-steps -> {out}")
     target, seconds = critical_path(rows)
     print(f"timings: critical path {seconds:.0f} s ({target}): the drivers' time with a node for every job")
     return 0

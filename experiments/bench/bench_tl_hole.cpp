@@ -5,8 +5,6 @@
 // variant = time_loop. Error = |smoothed max principal stress at (0, R) - Kirsch/Heywood| / Kirsch/Heywood.
 #include <omp.h>
 
-#include <cstdlib>
-
 #include <cmath>
 #include <vector>
 
@@ -18,7 +16,6 @@ int main(int argc, char** argv) {
   std::vector<int> ns{21, 81, 201};  // 201 x 201: the resolution the I-hole study ends at
   d.param("n", ns, "particles along a side").positive();
   return d.run(argc, argv, [&] {
-    ::unsetenv("SPH_RUN_CACHE");  // a benchmark steps its runs: never served from a store of runs
     if (d.quick() && !d.given("n")) ns = {21};
     auto out = d.csv("bench_tl_hole.csv", {"scene", "variant", "particles", "steps", "threads", "wall_s",
                                            "particle_steps_per_s", "error_name", "error"});

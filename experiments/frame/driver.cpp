@@ -122,6 +122,10 @@ DriverOption Driver::flag(const std::string& name, bool& var, const std::string&
   return DriverOption(app_->add_flag("--" + name, var, help), [] { return std::vector<double>{}; });
 }
 
+DriverOption Driver::location(const std::string& name, std::string& var, const std::string& help) {
+  return DriverOption(app_->add_option("--" + name, var, help), [] { return std::vector<double>{}; });
+}
+
 int Driver::run(int argc, char** argv, const std::function<void()>& body) {
   try {
     app_->parse(argc, argv);
@@ -130,11 +134,12 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
   }
   try {
     const auto start = std::chrono::steady_clock::now();
-    const long long work0 = particle_steps_taken(), reused0 = particle_steps_reused();
+    const long long work0 = particle_steps_taken();
     prepare_output();
     body();
-    write_timing(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                 particle_steps_taken() - work0, particle_steps_reused() - reused0);
+    if (!printing_only_)
+      write_timing(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                   particle_steps_taken() - work0);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << name_ << ": error: " << e.what() << "\n";
@@ -167,10 +172,9 @@ void Driver::retarget(const std::string& target) {
   prepare_output();
 }
 
-void Driver::write_timing(double wall_s, long long particle_steps, long long reused_particle_steps) const {
-  CsvWriter t(completion_record(), info(), {"target", "driver", "wall_s", "particle_steps", "threads", "reused_particle_steps"});
-  t.row(target_, name_, wall_s, static_cast<double>(particle_steps), omp_get_max_threads(),
-        static_cast<double>(reused_particle_steps));
+void Driver::write_timing(double wall_s, long long particle_steps) const {
+  CsvWriter t(completion_record(), info(), {"target", "driver", "wall_s", "particle_steps", "threads"});
+  t.row(target_, name_, wall_s, static_cast<double>(particle_steps), omp_get_max_threads());
 }
 
 RunInfo Driver::info() const {

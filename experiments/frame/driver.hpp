@@ -70,6 +70,9 @@ class Driver {
   DriverOption param(const std::string& name, T& var, const std::string& help);
   /// Registers a switch --<name>.
   DriverOption flag(const std::string& name, bool& var, const std::string& help);
+  /// Registers --<name> bound to `var`: an option that says where the run reads its inputs (like --out, where it
+  /// writes), not what it computes, so it is not recorded in the headers (frame/run_jobs.hpp's --runs-from).
+  DriverOption location(const std::string& name, std::string& var, const std::string& help);
 
   /// Parses the command line and runs `body`. Returns the process exit code.
   int run(int argc, char** argv, const std::function<void()>& body);
@@ -87,13 +90,16 @@ class Driver {
   CsvWriter csv(const std::string& filename, std::vector<std::string> columns) const;
   /// Records a reproduced quantity for `make check` (values_<driver>.csv: quantity,value,note).
   void value(const std::string& quantity, double v, const std::string& note = "");
+  /// This run only prints (e.g. --list-runs): no completion record is written, as nothing ran.
+  void printing_only() { printing_only_ = true; }
 
  private:
-  /// timing_<driver>.csv in the output directory: the wall time of the run, the particle-steps its time
-  /// loops took and those it took from stored runs instead (core/run_loop.hpp), for results/timings.csv. It is also the run's completion record:
+  /// timing_<driver>.csv in the output directory: the wall time of the run and the particle-steps its time
+  /// loops took (core/run_loop.hpp), for results/timings.csv. It is also the run's completion record:
   /// removed before the body starts and written only after it has returned, so that a run that fails, blows
-  /// up unhandled or is interrupted leaves its other files without it, and reference/check.py refuses them.
-  void write_timing(double wall_s, long long particle_steps, long long reused_particle_steps) const;
+  /// up unhandled or is interrupted leaves its other files without it, and reference/check.py refuses them (as
+  /// the run that collects a run job's folder does: frame/run_folder.hpp).
+  void write_timing(double wall_s, long long particle_steps) const;
   std::filesystem::path completion_record() const;
   /// Before a run: the output folder exists and is writable (else an error naming --out), and the run's
   /// completion record is removed.
@@ -104,6 +110,7 @@ class Driver {
   std::filesystem::path out_;
   std::vector<std::pair<std::string, std::function<std::string()>>> recorders_;
   std::unique_ptr<CsvWriter> values_;
+  bool printing_only_ = false;
 };
 
 }  // namespace sph

@@ -16,6 +16,7 @@
 #include "frame/driver.hpp"
 #include "core/materials.hpp"
 #include "gray2001/scenes/plate_run.hpp"
+#include "gray2001/scenes/run_files.hpp"
 #include "frame/run_jobs.hpp"
 
 int main(int argc, char** argv) {
@@ -46,7 +47,7 @@ int main(int argc, char** argv) {
     std::vector<Run> runs;
     for (int n : ns) runs.push_back({n, alpha});
     for (double a : alphas) runs.push_back({ns.front(), a});
-    // Each run named (the unit of a job: experiments/targets.mk G-fig4_RUNS); run_plate serves a stored one.
+    // Each run named (the unit of a job: Makefile run_rules): stepped here, or read from its run job's folder.
     auto tag_of = [](const Run& run) {
       std::ostringstream tag;
       tag << "n" << run.n << "_alpha" << run.alpha;
@@ -59,15 +60,17 @@ int main(int argc, char** argv) {
     };
     std::vector<std::string> names;
     for (const Run& run : runs) names.push_back(tag_of(run));
-    if (jobs.handled(names, [&](std::size_t i) { scenes::run_plate(spec_of(runs[i]), {}, "plate " + names[i]); })) return;
-    // wall_s: the run's time loop; for a run served from the store of runs, the stepping run's loop up to its last sample.
+    auto step = [&](std::size_t i) { return scenes::run_plate(spec_of(runs[i]), {}, "plate " + names[i]); };
+    if (jobs.handled(names, [&](std::size_t i) { scenes::write_plate_run(d, "plate", step(i)); })) return;
+    // wall_s: the run's time loop, where it was stepped (its run job, or this process).
     auto table = d.csv("runs.csv", {"n", "alpha", "particles", "dt", "steps", "wall_s", "T_sph", "amp_first", "amp_second",
                                     "decay_per_period", "T_over_theory"});
     std::vector<double> T_of_n, A_of_n;  // period and first amplitude at the study's alpha, by n
-    for (const Run& run : runs) {
-      const scenes::PlateRunSpec s = spec_of(run);
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      const Run& run = runs[i];
       const std::string tag_text = tag_of(run);
-      const auto r = scenes::run_plate(s, {}, "plate " + tag_text);
+      const auto r = jobs.result(tag_text, [](const sph::RunFolder& f) { return scenes::read_plate_run(f, "plate"); },
+                                 [&] { return step(i); });
       if (!r.blow_up.empty()) throw std::runtime_error(tag_text + ": " + r.blow_up);
       const double T = scenes::period_from_crossings(scenes::zero_crossings(r.trace));
       const auto ext = scenes::half_cycle_extremes(r.trace);

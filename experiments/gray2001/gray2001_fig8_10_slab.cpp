@@ -34,18 +34,14 @@
 //   edge. With eps = 0 the instability pairs columns all along the slab and the surface rows hold the
 //   pieces together, so the ends part (fracture_time) well after the first gap opens at a junction.
 #include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 
 #include "frame/driver.hpp"
 #include "frame/run_jobs.hpp"
-#include "core/run_loop.hpp"
 #include "io/snapshot.hpp"
 #include "gray2001/scenes/plate_run.hpp"
+#include "gray2001/scenes/run_files.hpp"
 #include "gray2001/scenes/slab.hpp"
-#include "gray2001/scenes/slab_store.hpp"
 
 namespace {
 
@@ -79,7 +75,7 @@ int main(int argc, char** argv) {
   d.param("runs", runs, "which of the runs eps = 0 and eps = 0.3 to do (e.g. --runs 0.3 for a fine eps = 0.3 run only)").non_negative();
   d.param("study-dps", study_dps, "further spacings of the eps = 0.3 resolution study (0: none)").non_negative();
   scenes::SlabSpec seeding;  // the perfect lattice by default; a jitter and seed draw one member of an ensemble
-  const sph::RunJobs jobs(d, "of the outputs only the main runs' snapshots and frames are written");
+  const sph::RunJobs jobs(d, "its result (and a main run's snapshots and frames)");
   d.param("jitter", seeding.jitter, "random displacement of every particle, up to this x dp (0: the lattice; SlabSpec::jitter)").non_negative();
   d.param("seed", seeding.seed, "seed of the jitter");
 
@@ -101,6 +97,56 @@ int main(int argc, char** argv) {
       s.sample_dt = sample_dt;
       return s;
     };
+    // The runs, named (the unit of a job: Makefile run_rules): the main runs (eps = 0 and 0.3 at dp, with snapshots
+    // and frames) and the eps = 0.3 study. Every run is stepped, or read from its run job's folder with the files its
+    // observer wrote there (--runs-from), before the outputs are written.
+    struct Planned { std::string name; double eps, dp; bool main; };
+    std::vector<Planned> plan;
+    for (const double eps : runs) {
+      if (eps != 0.0 && eps != 0.3) throw std::invalid_argument("runs: the figures' runs are eps = 0 and eps = 0.3");
+      plan.push_back({eps > 0 ? "eps0.3" : "eps0", eps, dp, true});
+    }
+    for (const double sdp : study_dps) {
+      if (sdp == 0) continue;  // --study-dps 0: no study
+      if (!(sdp > 0)) throw std::invalid_argument("study-dps: spacings must be > 0 (0: no study)");
+      plan.push_back({"eps0.3_" + dp_tag(sdp), 0.3, sdp, false});
+    }
+    auto files_of = [](const Planned& run) {  // a main run's snapshots and frames
+      return std::pair<std::string, std::string>{"snapshots_" + run.name + ".h5", "frames_" + run.name + ".csv"};
+    };
+    auto step = [&](const Planned& run) {  // stepped here, the main runs with their snapshots and frames
+      const auto s = spec(run.eps, run.dp);
+      if (!run.main) return scenes::run_slab(s, {}, "slab eps0.3 " + dp_tag(run.dp));
+      const double every = run.eps > 0 ? frame_every : frame_every_eps0;
+      sph::SnapshotSeries snaps(d.out_dir() / files_of(run).first, d.info());
+      auto frames = d.csv(files_of(run).second, scenes::frame_columns());
+      double next_frame = 0;
+      bool parted_shown = false;
+      auto on_sample = [&](const sph::GraySolver& solver, const sph::ElasticBody& body, const scenes::SlabSample& smp) {
+        const bool first_parted = smp.parted && !parted_shown;  // a frame at the fracture as well
+        if (!first_parted && solver.time() + 1e-9 < next_frame) return;
+        parted_shown = parted_shown || smp.parted;
+        if (!first_parted) next_frame += every;
+        snaps.write(sph::snapshot_of(solver));
+        scenes::write_frame(frames, solver, body);
+      };
+      return scenes::run_slab(s, on_sample, "slab " + run.name);
+    };
+    // A run read from its job's folder: its result, and a main run's snapshots and frames written again here.
+    auto read = [&](const Planned& run, const sph::RunFolder& folder) {
+      if (run.main) {
+        sph::rewrite_snapshots(folder, d, files_of(run).first);
+        sph::rewrite_table(folder, d, files_of(run).second);
+      }
+      return scenes::read_slab_run(folder, "slab");
+    };
+    std::vector<std::string> names;
+    for (const auto& r : plan) names.push_back(r.name);
+    if (jobs.handled(names, [&](std::size_t i) { scenes::write_slab_run(d, "slab", step(plan[i])); })) return;
+    std::vector<scenes::SlabRunResult> result;
+    for (const auto& run : plan)
+      result.push_back(jobs.result(run.name, [&](const sph::RunFolder& f) { return read(run, f); }, [&] { return step(run); }));
+    // wall_s: of the run where it was stepped (its run job, or this process).
     auto summary = d.csv("summary.csv", {"eps", "dp", "particles", "steps", "wall_s", "clumping_time", "first_split_time", "fracture_time",
                                          "crack_x", "crack_from_junction", "opening_time", "opening_from_junction", "neck_before_fracture", "neck_before_fracture_over_dp",
                                          "onset_time", "onset_strain", "strain_at_fracture", "blow_up"});
@@ -116,62 +162,6 @@ int main(int argc, char** argv) {
       for (const auto& m : r.trace)
         trace.row(m.t, m.extension, m.strain, m.ke, m.ee, m.neck_width, m.neck_x, m.median_width, m.closest, m.widest_gap, m.gap_x, m.pieces, m.parted);
     };
-    // The runs, named (the unit of a job: Makefile run_rules, experiments/targets.mk G-fig8_RUNS): the main runs
-    // (eps = 0 and 0.3 at dp, with snapshots and frames) and the eps = 0.3 study. Every run is stepped, or served
-    // by the store of runs with the files its observer wrote, before the outputs are written.
-    struct Planned { std::string name; double eps, dp; bool main; };
-    std::vector<Planned> plan;
-    for (const double eps : runs) {
-      if (eps != 0.0 && eps != 0.3) throw std::invalid_argument("runs: the figures' runs are eps = 0 and eps = 0.3");
-      plan.push_back({eps > 0 ? "eps0.3" : "eps0", eps, dp, true});
-    }
-    for (const double sdp : study_dps) {
-      if (sdp == 0) continue;  // --study-dps 0: no study
-      if (!(sdp > 0)) throw std::invalid_argument("study-dps: spacings must be > 0 (0: no study)");
-      plan.push_back({"eps0.3_" + dp_tag(sdp), 0.3, sdp, false});
-    }
-    auto step = [&](const Planned& run) {  // stepped here (or served), with the main runs' snapshots and frames
-      const auto s = spec(run.eps, run.dp);
-      if (!run.main) return scenes::run_slab_stored(s, "slab eps0.3 " + dp_tag(run.dp));  // no files of its own
-      const std::string tag = run.eps > 0 ? "eps0.3" : "eps0";
-      const double every = run.eps > 0 ? frame_every : frame_every_eps0;
-      const std::string files_tag = "snapshots and frames every " + sph::format_number(every);
-      const std::vector<std::string> names{"snapshots_" + tag + ".h5", "snapshots_" + tag + ".xdmf", "frames_" + tag + ".csv"};
-      if (auto stored = scenes::serve_slab_run(s, files_tag)) {
-        for (const auto& [name, bytes] : stored->files) std::ofstream(d.out_dir() / name, std::ios::binary) << bytes;
-        sph::particle_steps_reused() += static_cast<long long>(stored->result.particles) * stored->result.steps;
-        std::fprintf(stderr, "slab %s: a stored run (%s), not stepped again\n", run.name.c_str(), sph::run_store_dir().c_str());
-        return stored->result;  // its wall_s is the stepping run's
-      }
-      scenes::StoredSlabRun done;
-      {
-        sph::SnapshotSeries snaps(d.out_dir() / names[0], d.info());
-        auto frames = d.csv(names[2], scenes::frame_columns());
-        double next_frame = 0;
-        bool parted_shown = false;
-        auto on_sample = [&](const sph::GraySolver& solver, const sph::ElasticBody& body, const scenes::SlabSample& smp) {
-          const bool first_parted = smp.parted && !parted_shown;  // a frame at the fracture as well
-          if (!first_parted && solver.time() + 1e-9 < next_frame) return;
-          parted_shown = parted_shown || smp.parted;
-          if (!first_parted) next_frame += every;
-          snaps.write(sph::snapshot_of(solver));
-          scenes::write_frame(frames, solver, body);
-        };
-        done.result = scenes::run_slab(s, on_sample, "slab " + tag);
-      }  // the files closed: stored as written
-      for (const auto& name : names) {
-        std::ifstream in(d.out_dir() / name, std::ios::binary);
-        done.files.emplace_back(name, std::string(std::istreambuf_iterator<char>(in), {}));
-      }
-      scenes::store_slab_run(s, files_tag, done);
-      return done.result;
-    };
-    std::vector<std::string> names;
-    for (const auto& r : plan) names.push_back(r.name);
-    if (jobs.handled(names, [&](std::size_t i) { step(plan[i]); })) return;
-    std::vector<scenes::SlabRunResult> result;
-    for (const auto& run : plan) result.push_back(step(run));
-    // wall_s: of the run where it was stepped (a run job, or this process).
     double fracture_main = NAN;
     for (std::size_t i = 0; i < plan.size(); ++i) {
       if (!plan[i].main) continue;

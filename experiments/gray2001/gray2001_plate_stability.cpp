@@ -7,9 +7,9 @@
 // (1) is repeated at the papers' dp = 0.1 (--paper-sweep-dp, 0 skips; issue 14 item 5: a margin measured
 // only at 8 across H said nothing of the resolution the tables run at), over --paper-cfl-values.
 // Every run is named (--list-runs true prints them): each sweep point and the four runs of (2)-(4) are jobs of
-// their own in make figures (experiments/targets.mk G-stab_RUNS, --step-runs; issue 17), which the collecting run
-// reads back from the store of runs. A job steps its point whatever the points below it gave; the collecting run
-// stops each sweep at its first failure, as before.
+// their own in make figures (Makefile run_rules, --step-runs; issue 17), which the collecting run reads back from
+// their folders (--runs-from). A job steps its point whatever the points below it gave; the collecting run stops
+// each sweep at its first failure, as before.
 // CHOSEN parameters: H = 2, L = 20, dp = 0.25 (8 across H: the sweep needs many runs), mu = 0.6 and
 // V_f = 0.01 (the shortest period of Table 1), the other parameters as the table driver. A run "blows
 // up" when the solver stops it (non-finite state, density below 5% of rho0, or |v| > 100 c0) or when the
@@ -23,7 +23,7 @@
 #include "core/materials.hpp"
 #include "frame/run_jobs.hpp"
 #include "gray2001/scenes/plate_run.hpp"
-#include "gray2001/scenes/plate_run_cache.hpp"
+#include "gray2001/scenes/run_files.hpp"
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_plate_stability", "G-stab", "Stability of the plate: time-step sweep, long run, perturbed lattice");
@@ -84,8 +84,8 @@ int main(int argc, char** argv) {
       s.t_end = sweep_time;
       return s;
     };
-    auto run_point = [&](const Point& q) {
-      return scenes::run_plate_stored(point_spec(q), "cfl sweep dp " + sph::format_number(q.spacing));
+    auto step_point = [&](const Point& q) {
+      return scenes::run_plate(point_spec(q), {}, "cfl sweep dp " + sph::format_number(q.spacing));
     };
     // (2) The long run, (3) the perturbed lattice against an unperturbed reference of the same length, (4) the
     // reference at half the step.
@@ -101,15 +101,17 @@ int main(int argc, char** argv) {
       s.run_after_fracture = -1;
       return s;
     };
+    auto step_whole = [&](const Whole& w) { return scenes::run_plate(whole_spec(w), {}, w.name); };
     std::vector<std::string> names;
     for (const Point& q : points) names.push_back(q.name);
     for (const Whole& w : wholes) names.push_back(w.name);
-    // A job: run_plate_stored stores a point whole, run_plate the runs of (2)-(4) (they stop at crossings).
     if (jobs.handled(names, [&](std::size_t i) {
-          if (i < points.size()) run_point(points[i]);
-          else scenes::run_plate(whole_spec(wholes[i - points.size()]), {}, wholes[i - points.size()].name);
+          scenes::write_plate_run(d, "plate", i < points.size() ? step_point(points[i]) : step_whole(wholes[i - points.size()]));
         }))
       return;
+    // Every run read from its job's folder (--runs-from), or stepped here.
+    auto read = [](const sph::RunFolder& f) { return scenes::read_plate_run(f, "plate"); };
+    auto run_point = [&](const Point& q) { return jobs.result(q.name, read, [&] { return step_point(q); }); };
     auto sweep = d.csv("cfl_sweep.csv", {"dp", "eps", "cfl", "dt", "steps", "t_reached", "blew_up", "fractured", "message"});
     auto sweep_at = [&](int which, const std::string& suffix) {
       for (const double eps : {0.0, 0.3}) {
@@ -132,7 +134,7 @@ int main(int argc, char** argv) {
     auto runs = d.csv("runs.csv", {"run", "periods", "steps", "wall_s", "T_first", "T_last", "fragments", "energy_first", "energy_last"});
     auto one = [&](const std::string& name) {
       const Whole& w = *std::find_if(wholes.begin(), wholes.end(), [&](const Whole& x) { return x.name == name; });
-      const auto r = scenes::run_plate(whole_spec(w), {}, name);
+      const auto r = jobs.result(name, read, [&] { return step_whole(w); });
       if (!r.blow_up.empty()) throw std::runtime_error(name + ": " + r.blow_up);
       const auto c = scenes::zero_crossings(r.trace);
       const double T_first = c.size() >= 2 ? c[1] : NAN;

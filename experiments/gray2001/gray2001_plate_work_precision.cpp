@@ -6,9 +6,9 @@
 // over all resolutions (p scanned on [0.25, 4] in steps of 0.01, T_inf and C linear for each p).
 // Parameters: mu = 0.6, V_f = 0.01 (the shortest period of Table 1: the cheapest full period), the rest
 // as the table driver; each run stops at the tip's second zero crossing (one period).
-// Each run is named (--list-runs true prints them) and is a job of its own in make figures (experiments/targets.mk
-// G-wp_RUNS, --step-runs; issue 17): the job steps it (its wall time is the work axis) and stores it with the time
-// loop's seconds at every sample, and the collecting run reads it back with the stepping job's wall time.
+// Each run is named (--list-runs true prints them) and is a job of its own in make figures (Makefile run_rules,
+// --step-runs; issue 17): the job steps it (its wall time is the work axis) and writes it into its folder, and the
+// collecting run reads it back with the stepping job's wall time (--runs-from).
 #include <omp.h>
 
 #include <cmath>
@@ -19,6 +19,7 @@
 #include "frame/run_jobs.hpp"
 #include "core/materials.hpp"
 #include "gray2001/scenes/plate_run.hpp"
+#include "gray2001/scenes/run_files.hpp"
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_plate_work_precision", "G-wp", "Work-precision of the plate period");
@@ -52,24 +53,22 @@ int main(int argc, char** argv) {
       s.t_end = 2.0 * T_th;  // an upper bound: the run stops at the second crossing
       s.stop_after_crossings = 2;
       s.sample_dt = 0.5;
-      s.fracture_check_dt = 100.0;  // as Table 1, whose mu = 0.6, V_f = 0.01 row this n = 20 run contains
+      s.fracture_check_dt = 100.0;  // as Table 1 (its mu = 0.6, V_f = 0.01 row is a prefix of this n = 20 run)
       return s;
     };
-    auto step = [&](const Planned& q, bool reuse) {
+    auto step = [&](const Planned& q) {
       omp_set_num_threads(q.threads);
-      scenes::PlateRunSpec s = spec_of(q);
-      s.reuse = reuse;
-      return scenes::run_plate(s, {}, "work-precision n" + std::to_string(q.n));
+      return scenes::run_plate(spec_of(q), {}, "work-precision n" + std::to_string(q.n));
     };
     std::vector<std::string> names;
     for (const auto& q : plan) names.push_back(q.name);
-    // A job always steps its run (its wall time is the work axis) and stores it.
-    if (jobs.handled(names, [&](std::size_t i) { step(plan[i], false); })) return;
-    // A run stepped by a job is served with that job's measured wall time; otherwise it is stepped here (and
-    // stored for Table 1).
+    if (jobs.handled(names, [&](std::size_t i) { scenes::write_plate_run(d, "plate", step(plan[i])); })) return;
+    // A run stepped by its job is read from its folder, with that job's measured wall time; otherwise it is stepped here.
     std::vector<Run> runs;
     for (const auto& q : plan) {
-      const auto r = step(q, true);
+      omp_set_num_threads(q.threads);  // its run job's too (its folder is refused if not)
+      const auto r = jobs.result(q.name, [](const sph::RunFolder& f) { return scenes::read_plate_run(f, "plate"); },
+                                 [&] { return step(q); });
       if (!r.blow_up.empty()) throw std::runtime_error(r.blow_up);
       runs.push_back({q.n, q.threads, scenes::period_from_crossings(scenes::zero_crossings(r.trace)), r.wall_s, r.steps, r.particles});
     }

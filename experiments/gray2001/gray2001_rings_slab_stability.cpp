@@ -8,9 +8,9 @@
 // time is one draw of an instability grown from the lattice's seed), compared by the median.
 //
 // Every run is named (--list-runs true prints them): each sweep point, each run of (3) and the fast collision are
-// jobs of their own in make figures (experiments/targets.mk G-stab-rs_RUNS, --step-runs; issue 17), which the
-// collecting run reads back from the store of runs. A job steps its point whatever the points below it gave; the
-// collecting run stops each sweep at its first failure, as before.
+// jobs of their own in make figures (Makefile run_rules, --step-runs; issue 17), which the collecting run reads back
+// from their folders (--runs-from). A job steps its point whatever the points below it gave; the collecting run
+// stops each sweep at its first failure, as before.
 //
 // CHOSEN parameters: rings dp = 0.2 over t = 80 (the first half of the impact, where the rings are most
 // compressed); slab dp = 0.064 over t = 300 (strain 0.075, well into the plastic range); the fast collision
@@ -27,8 +27,9 @@
 
 #include "frame/driver.hpp"
 #include "frame/run_jobs.hpp"
-#include "gray2001/scenes/rings_store.hpp"
-#include "gray2001/scenes/slab_store.hpp"
+#include "gray2001/scenes/rings_run.hpp"
+#include "gray2001/scenes/run_files.hpp"
+#include "gray2001/scenes/slab.hpp"
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_rings_slab_stability", "G-stab-rs", "Stability of the rings and the slab: time-step sweep, fast collision");
@@ -106,26 +107,37 @@ int main(int argc, char** argv) {
     auto sweep_name = [&](const char* scene, double eps, double f) { return std::string(scene) + "_eps" + text(eps) + "_cfl" + text(f); };
     auto slab_label = [&](double f, int seed) { return "slab at cfl " + sph::format_number(f) + ", seed " + std::to_string(seed); };
     std::vector<std::string> names;
-    std::vector<std::function<void()>> steps;  // a run job's work for each name
+    std::vector<std::function<void()>> steps;  // a run job's work for each name: step the run, write it
+    auto plan = [&](const std::string& name, auto&& step, auto&& write) {
+      names.push_back(name);
+      steps.push_back([&d, name, step, write] { write(d, "run", step()); });
+    };
     for (const double eps : {0.0, 0.3})
       for (const double f : cfls) {
-        names.push_back(sweep_name("rings", eps, f));
-        steps.push_back([&, eps, f] { scenes::run_rings_stored(sweep_rings(eps, f), "rings cfl sweep"); });
-        names.push_back(sweep_name("slab", eps, f));
-        steps.push_back([&, eps, f] { scenes::run_slab_stored(sweep_slab(eps, f), "slab cfl sweep"); });
+        plan(sweep_name("rings", eps, f), [&, eps, f] { return scenes::run_rings(sweep_rings(eps, f), {}, "rings cfl sweep"); },
+             scenes::write_rings_run);
+        plan(sweep_name("slab", eps, f), [&, eps, f] { return scenes::run_slab(sweep_slab(eps, f), {}, "slab cfl sweep"); },
+             scenes::write_slab_run);
       }
     for (const double f : factors) {
-      names.push_back("rings_cfl" + text(f));
-      steps.push_back([&, f] { scenes::run_rings_stored(whole_rings(f), "rings at cfl " + std::to_string(f)); });
+      plan("rings_cfl" + text(f), [&, f] { return scenes::run_rings(whole_rings(f), {}, "rings at cfl " + std::to_string(f)); },
+           scenes::write_rings_run);
       if (d.quick()) continue;
-      for (int seed = 0; seed < slab_seeds; ++seed) {
-        names.push_back("slab_cfl" + text(f) + "_seed" + std::to_string(seed));
-        steps.push_back([&, f, seed] { scenes::run_slab_stored(ensemble_slab(f, seed), slab_label(f, seed)); });
-      }
+      for (int seed = 0; seed < slab_seeds; ++seed)
+        plan("slab_cfl" + text(f) + "_seed" + std::to_string(seed),
+             [&, f, seed] { return scenes::run_slab(ensemble_slab(f, seed), {}, slab_label(f, seed)); }, scenes::write_slab_run);
     }
-    names.push_back("fast");
-    steps.push_back([&] { scenes::run_rings_stored(fast_rings(), "rings fast"); });
+    plan("fast", [&] { return scenes::run_rings(fast_rings(), {}, "rings fast"); }, scenes::write_rings_run);
     if (jobs.handled(names, [&](std::size_t i) { steps[i](); })) return;
+    // Every run read from its job's folder (--runs-from), or stepped here.
+    auto rings = [&](const std::string& name, const scenes::RingsRunSpec& spec, const std::string& label) {
+      return jobs.result(name, [](const sph::RunFolder& f) { return scenes::read_rings_run(f, "run"); },
+                         [&] { return scenes::run_rings(spec, {}, label); });
+    };
+    auto slab = [&](const std::string& name, const scenes::SlabRunSpec& spec, const std::string& label) {
+      return jobs.result(name, [](const sph::RunFolder& f) { return scenes::read_slab_run(f, "run"); },
+                         [&] { return scenes::run_slab(spec, {}, label); });
+    };
 
     auto sweep = d.csv("cfl_sweep.csv", {"scene", "eps", "cfl", "dt", "steps", "t_reached", "blew_up", "broke", "failed", "message"});
     for (const double eps : {0.0, 0.3}) {
@@ -133,7 +145,7 @@ int main(int argc, char** argv) {
       double stable_rings = 0, stable_slab = 0;
       bool rings_baseline_broke = false, slab_baseline_broke = false;
       for (const double cfl : cfls) {
-        const auto r = scenes::run_rings_stored(sweep_rings(eps, cfl), "rings cfl sweep");
+        const auto r = rings(sweep_name("rings", eps, cfl), sweep_rings(eps, cfl), "rings cfl sweep");
         const bool blew = !r.blow_up.empty(), broke = r.max_fragments > 1;
         if (cfl == cfls.front()) rings_baseline_broke = broke;
         const bool failed = blew || (broke && !rings_baseline_broke);
@@ -142,7 +154,7 @@ int main(int argc, char** argv) {
         stable_rings = cfl;
       }
       for (const double cfl : cfls) {
-        const auto r = scenes::run_slab_stored(sweep_slab(eps, cfl), "slab cfl sweep");
+        const auto r = slab(sweep_name("slab", eps, cfl), sweep_slab(eps, cfl), "slab cfl sweep");
         const bool blew = !r.blow_up.empty(), broke = r.fracture_time >= 0;
         if (cfl == cfls.front()) slab_baseline_broke = broke;
         const bool failed = blew || (broke && !slab_baseline_broke);
@@ -165,13 +177,13 @@ int main(int argc, char** argv) {
     std::vector<double> parting[2];
     for (int k = 0; k < 2; ++k) {
       const double f = factors[k];
-      rings_at[k] = scenes::run_rings_stored(whole_rings(f), "rings at cfl " + std::to_string(f));
+      rings_at[k] = rings("rings_cfl" + text(f), whole_rings(f), "rings at cfl " + std::to_string(f));
       const auto& r = rings_at[k];
       if (!r.blow_up.empty()) throw std::runtime_error("rings at cfl " + std::to_string(f) + ": " + r.blow_up);
       halved.row("rings", f, -1, r.dt, r.steps, r.restitution, r.max_fragments, r.fracture_time, r.blow_up);
       if (d.quick()) continue;
       for (int seed = 0; seed < slab_seeds; ++seed) {
-        const auto q = scenes::run_slab_stored(ensemble_slab(f, seed), slab_label(f, seed));
+        const auto q = slab("slab_cfl" + text(f) + "_seed" + std::to_string(seed), ensemble_slab(f, seed), slab_label(f, seed));
         if (!q.blow_up.empty()) throw std::runtime_error(slab_label(f, seed) + ": " + q.blow_up);
         halved.row("slab", f, seed, q.dt, q.steps, NAN, NAN, q.fracture_time, q.blow_up);
         parting[k].push_back(q.fracture_time);
@@ -212,7 +224,7 @@ int main(int argc, char** argv) {
       }
     }
     // The fast collision.
-    const auto r = scenes::run_rings_stored(fast_rings(), "rings fast");
+    const auto r = rings("fast", fast_rings(), "rings fast");
     auto fast = d.csv("fast_collision.csv", {"dp", "speed", "steps", "wall_s", "blew_up", "max_fragments", "min_main_share", "max_stray",
                                              "contact_duration", "restitution", "message"});
     const double duration = r.contact_end >= 0 ? r.contact_end - r.contact_start : NAN;

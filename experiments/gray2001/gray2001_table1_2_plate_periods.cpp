@@ -25,8 +25,10 @@
 #include <sstream>
 
 #include "frame/driver.hpp"
+#include "frame/run_jobs.hpp"
 #include "core/materials.hpp"
 #include "gray2001/scenes/plate_run.hpp"
+#include "gray2001/scenes/run_files.hpp"
 
 namespace {
 
@@ -79,10 +81,43 @@ int main(int argc, char** argv) {
   std::vector<std::string> only, row_names;
   for (const Row& r : kRows) row_names.push_back(key(r));
   d.param("rows", only, "run only these rows, e.g. H2_Vf0.05_mu0.6 (default: every row of the table)").one_of(row_names);
+  // Each row a run (named by it, --list-runs true), with Table 2's same-n run: a job of its own in make figures
+  // (Makefile run_rules, --step-runs <row>), read back by the collecting run (--runs-from); the coarse reference
+  // stays with the collecting run.
+  const sph::RunJobs jobs(d);
 
   return d.run(argc, argv, [&] {
     d.retarget(table == 2 ? "G-tab2" : "G-tab1");
     if (d.quick() && !d.given("dp")) dp = 0.25;
+    // The rows this run does; --quick: one row per table (mu = 0.6, Vf = 0.01, the shortest periods) at a coarser
+    // spacing. A row's runs: its own ("row") and, in Table 2, the same-n reading (issue 14 item 1: as many particles
+    // across H = 1 as Table 1 has across H = 2, dp H / 2, its theory column unchanged).
+    std::vector<Row> rows;
+    std::vector<std::string> names;
+    for (const Row& row : kRows) {
+      if (table != 0 && row.table != table) continue;
+      if (!only.empty() && std::find(only.begin(), only.end(), key(row)) == only.end()) continue;
+      if (d.quick() && !(row.mu == 0.6 && row.Vf == 0.01)) continue;
+      rows.push_back(row);
+      names.push_back(key(row));
+    }
+    auto runs_of = [&](const Row& row) {
+      std::vector<std::pair<std::string, double>> r{{"", dp}};  // (tag, spacing)
+      if (same_n && row.table == 2) r.emplace_back("same_n", dp * row.H / 2.0);
+      return r;
+    };
+    auto step = [&](const Row& row, double spacing, const std::string& tag) {
+      sph::GrayParameters row_scheme = scheme;
+      row_scheme.mu = row.mu;
+      scenes::PlateRunSpec s = scenes::table_plate_run(row.H, row.Vf, spacing, clamp, row_scheme, periods, crossings);
+      s.max_steps = max_steps;
+      return scenes::run_plate(s, {}, "plate " + (tag.empty() ? key(row) : tag + "_" + key(row)));
+    };
+    auto file_of = [](const std::string& tag) { return tag.empty() ? std::string("row") : tag; };
+    if (jobs.handled(names, [&](std::size_t i) {
+          for (const auto& [tag, spacing] : runs_of(rows[i])) scenes::write_plate_run(d, file_of(tag), step(rows[i], spacing, tag));
+        }))
+      return;
     const double K = 1.0;  // rho0 c0^2
     // The theory column (7.1) under the reading that reproduces the published one.
     for (const double H : {2.0, 1.0})
@@ -120,7 +155,7 @@ int main(int argc, char** argv) {
             d.value("T_bound_" + theory_key(H, mu).substr(9), (1.0 + excess) * scenes::plate_theory_period(mu, H - paper_dp, 20.0),
                     "T_theory (H - paper_dp) x (1 + period_excess_coarse_reference): the rows' upper bound");
     }
-    // wall_s: the run's time loop; for a run served from the store of runs, the stepping run's loop up to its last sample.
+    // wall_s: the run's time loop, where it was stepped (its row's run job, or this process).
     auto periods_csv = d.csv("periods.csv", {"table", "H", "Vf", "mu", "dp", "particles", "dt", "steps", "wall_s",
                                              "T_sph", "T_theory_thin", "T_theory_reading", "error_vs_theory",
                                              "tip_amplitude", "fragments"});
@@ -131,12 +166,9 @@ int main(int argc, char** argv) {
       const double E = sph::young_from_bulk_shear(K, row.mu), nu = sph::poisson_ratio_from_bulk_shear(K, row.mu);
       const double T_thin = scenes::plate_theory_period(E, nu, row.H, 20.0, 1.0);
       const double T_reading = scenes::plate_theory_period(E, nu, row.H - paper_dp, 20.0, 1.0);
-      sph::GrayParameters row_scheme = scheme;
-      row_scheme.mu = row.mu;
-      scenes::PlateRunSpec s = scenes::table_plate_run(row.H, row.Vf, spacing, clamp, row_scheme, periods, crossings);
-      s.max_steps = max_steps;
       const std::string name = tag.empty() ? key(row) : tag + "_" + key(row);
-      const auto res = scenes::run_plate(s, {}, "plate " + name);
+      const auto res = jobs.result(key(row), [&](const sph::RunFolder& f) { return scenes::read_plate_run(f, file_of(tag)); },
+                                   [&] { return step(row, spacing, tag); });
       if (!res.blow_up.empty()) throw std::runtime_error(name + ": " + res.blow_up);
       const double T = scenes::period_from_crossings(scenes::zero_crossings(res.trace));
       const auto ext = scenes::half_cycle_extremes(res.trace);
@@ -158,16 +190,8 @@ int main(int argc, char** argv) {
       if (tag.empty())
         d.value("fragments_" + key(row), static_cast<double>(pieces), "pieces of the plate at the end (1 = intact)");
     };
-    for (const Row& row : kRows) {
-      if (table != 0 && row.table != table) continue;
-      if (!only.empty() && std::find(only.begin(), only.end(), key(row)) == only.end()) continue;
-      // --quick: one row per table (mu = 0.6, Vf = 0.01, the shortest periods) at a coarser spacing.
-      if (d.quick() && !(row.mu == 0.6 && row.Vf == 0.01)) continue;
-      run_row(row, dp, "");
-      // The reading of issue 14 item 1: Table 2 run with as many particles across H = 1 as Table 1 has
-      // across H = 2, its theory column unchanged (H - paper_dp).
-      if (same_n && row.table == 2) run_row(row, dp * row.H / 2.0, "same_n");
-    }
+    for (const Row& row : rows)
+      for (const auto& [tag, spacing] : runs_of(row)) run_row(row, spacing, tag);
     for (const auto& [suffix, e] : errors) {
       d.value("max_error_vs_theory_" + suffix, e.max, "max |T_sph / T_theory(H - paper_dp) - 1|, the paper's error against its theory column");
       d.value("mean_error_vs_theory_" + suffix, e.sum / e.count, "mean |T_sph / T_theory(H - paper_dp) - 1|");

@@ -91,7 +91,6 @@ int main(int argc, char** argv) {
       ps.stop_after_crossings = 1;
       ps.fracture_check_dt = 5.0;
       ps.run_after_fracture = 20.0;
-      ps.reuse = false;  // its wall time is a column of the cures table
       const auto pr = scenes::run_plate(ps, {}, "cures plate " + name);
       const bool plate_broken = pr.fracture_time >= 0 || !pr.blow_up.empty();
       const double T = plate_broken ? NAN : scenes::period_from_crossings(scenes::zero_crossings(pr.trace));

@@ -8,8 +8,8 @@
 // machine; the runs are spread over the OpenMP threads), <v>_M with arithmetic
 // rho_ij, plain continuity equation, closest distance 0.7, viscosity q = rho (2 dx)^2 (div v)^2 in compression.
 // Each combination is a run of its own, named by its label with '_' for '/' (--list-runs true prints them): a job
-// of its own in make figures (experiments/targets.mk H-72_RUNS, --step-runs; issue 17), which the collecting run
-// reads back from the store of runs (scenes/hexagon_store.hpp).
+// of its own in make figures (Makefile run_rules, --step-runs; issue 17), which writes its run into its folder
+// (scenes/hexagon_files.hpp) for the collecting run to read back (--runs-from).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,7 +17,7 @@
 #include "frame/driver.hpp"
 #include "frame/run_jobs.hpp"
 #include "hoover2004/scenes/hexagon.hpp"
-#include "hoover2004/scenes/hexagon_store.hpp"
+#include "hoover2004/scenes/hexagon_files.hpp"
 
 using namespace sph;
 
@@ -45,8 +45,13 @@ int main(int argc, char** argv) {
             }
     std::vector<std::string> names;
     for (const auto& x : v) names.push_back(scenes::value_name(x.name));
-    if (jobs.handled(names, [&](std::size_t i) { scenes::run_hexagon_stored(s, v[i]); })) return;
-    const auto runs = scenes::run_and_record(d, s, v);
+    if (jobs.handled(names, [&](std::size_t i) { scenes::write_hexagon_run(d, "hexagon", scenes::run_hexagon(s, v[i])); }))
+      return;
+    std::vector<scenes::HexagonRun> runs;  // read from the run jobs' folders (--runs-from), else stepped here
+    for (const auto& name : names)
+      if (const auto folder = jobs.folder(name)) runs.push_back(scenes::read_hexagon_run(*folder, "hexagon"));
+    if (runs.empty()) runs = scenes::run_hexagons(s, v);
+    scenes::record_hexagons(d, s, v, runs);
     struct Row { std::string variant; double L_ratio, shape, failed_at; long reflections; SpamOptions o; };
     std::vector<Row> rows;
     for (std::size_t i = 0; i < runs.size(); ++i) {

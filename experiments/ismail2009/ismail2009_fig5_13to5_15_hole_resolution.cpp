@@ -67,6 +67,7 @@
 #include "frame/run_jobs.hpp"
 #include "ismail2009/scenes/fem_hole.hpp"
 #include "ismail2009/scenes/hole.hpp"
+#include "ismail2009/scenes/hole_files.hpp"
 
 // Richardson extrapolation of the smoothed (0, R) stress S(n) from the finest three runs whose spacings halve
 // ((n - 1) doubling: 41, 81, 161 of the default study): the observed order p, the converged value S_inf, and
@@ -129,8 +130,8 @@ int main(int argc, char** argv) {
       if (!d.given("edge-n")) edge_ns = {21};
       if (!d.given("edge-variants-n")) edge_n = 21;
     }
-    // The study's runs, named (the unit of a job: Makefile run_rules, experiments/targets.mk I-hole_RUNS). Every
-    // run is stepped (or served by the store) here, before the outputs, which are then written in the study's order.
+    // The study's runs, named (the unit of a job: Makefile run_rules). Every run is stepped here (or read from its
+    // run job's folder, --runs-from) before the outputs, which are then written in the study's order.
     const auto linear_edge = scenes::linear_edge_run;  // issue 15 (b): Hooke at 1%, undamped, no control, 12/omega
     const bool edges = !edge_ns.empty() && edge_ns.front() != 0;
     scenes::HoleParams e = p;  // the edge series' base: the study's sheet, then linear_edge
@@ -142,7 +143,15 @@ int main(int argc, char** argv) {
     };
     for (int n : ns) { auto q = p; q.n = n; plan_run("controlled_n" + std::to_string(n), q); }
     for (int n : plain_ns) { auto q = p; q.n = n; q.hourglass = 0; plan_run("plain_n" + std::to_string(n), q); }
-    for (double g : gammas) { auto q = p; q.n = gamma_n; q.hourglass = g; plan_run("gamma_g" + sph::format_number(g), q); }
+    // A gamma of the study's own (or 0) at one of its n is that controlled (or plain) run: named once, read twice.
+    std::map<std::string, std::string> same_as;
+    auto among = [](const std::vector<int>& v, int n) { return std::find(v.begin(), v.end(), n) != v.end(); };
+    for (double g : gammas) {
+      const std::string name = "gamma_g" + sph::format_number(g);
+      if (g == p.hourglass && among(ns, gamma_n)) same_as[name] = "controlled_n" + std::to_string(gamma_n);
+      else if (g == 0 && among(plain_ns, gamma_n)) same_as[name] = "plain_n" + std::to_string(gamma_n);
+      else { auto q = p; q.n = gamma_n; q.hourglass = g; plan_run(name, q); }
+    }
     if (linear_n > 0) {
       auto q = p;
       q.n = linear_n;
@@ -166,23 +175,26 @@ int main(int argc, char** argv) {
         plan_run(edge_run_name("passes30", eigen_n), q);
       }
     }
-    auto planned = [&](const std::string& name) {  // the plan's entry of `name`, or plan.end()
-      return std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == name; });
+    auto planned = [&](const std::string& name) {  // the plan's entry of `name` (or of the run it is), or plan.end()
+      const std::string& id = same_as.count(name) ? same_as.at(name) : name;
+      return std::find_if(plan.begin(), plan.end(), [&](const auto& r) { return r.first == id; });
     };
     std::map<std::string, scenes::HoleResult> result;
     std::vector<std::string> names;
     for (const auto& [name, _] : plan) names.push_back(name);
-    if (jobs.handled(names, [&](std::size_t i) { scenes::run_hole(plan[i].second); })) return;
-    for (const auto& [name, q] : plan) result.emplace(name, scenes::run_hole(q));
-    // wall_s, build_s: of the run where it was stepped (a run job, or this process); a run served from the store
-    // of runs reports the times the stepping run stored.
+    if (jobs.handled(names, [&](std::size_t i) { scenes::write_hole_run(d, "hole", scenes::run_hole(plan[i].second)); }))
+      return;
+    for (const auto& [name, q] : plan)
+      result.emplace(name, jobs.result(name, [](const sph::RunFolder& f) { return scenes::read_hole_run(f, "hole"); },
+                                       [&q = q] { return scenes::run_hole(q); }));
+    // wall_s, build_s: of the run where it was stepped (its run job, or this process).
     auto out = d.csv("resolution.csv", {"series", "n", "hourglass", "law", "traction_MPa", "particles", "steps", "wall_s", "build_s",
                                         "sigma1_hole_top_MPa", "peak_sigma1_MPa", "peak_sigma1_dynamic_MPa",
                                         "smoothed_sigma1_hole_top_MPa", "zigzag", "settle_change", "speed_rise", "rest_speed_ratio", "growth_rate", "fastest_X", "fastest_Y"});
     auto hist = d.csv("history.csv", {"series", "n", "hourglass", "t", "smoothed_sigma1_hole_top_MPa", "peak_sigma1_MPa", "max_speed"});
     auto run = [&](const std::string& series, const std::string& name) {
-      const scenes::HoleParams& q = planned(name)->second;
-      const scenes::HoleResult& r = result.at(name);
+      const auto& [id, q] = *planned(name);
+      const scenes::HoleResult& r = result.at(id);
       if (!r.finite)
         throw std::runtime_error("the sheet run became non-finite (" + series + ", n = " + std::to_string(q.n) + ", gamma = " +
                                  sph::format_number(q.hourglass) + ")");

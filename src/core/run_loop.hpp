@@ -69,13 +69,6 @@ inline std::atomic<long long>& particle_steps_taken() {
   return total;
 }
 
-/// Particle-steps a driver took from a stored run instead of stepping them (experiments' run stores, e.g.
-/// gray2001/scenes/plate_run_cache.hpp): the reuse column of the timing table.
-inline std::atomic<long long>& particle_steps_reused() {
-  static std::atomic<long long> total{0};
-  return total;
-}
-
 template <class Solver, class Observe, class Progress = NoProgress>
 RunOutcome run(Solver& solver, const RunPlan& plan, Observe&& observe, Progress&& progress = {}) {
   if (!(plan.dt > 0)) throw std::invalid_argument("run: the time step must be positive");

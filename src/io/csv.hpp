@@ -28,12 +28,14 @@ class CsvWriter {
   void write_cells(const std::vector<std::string>& cells);
   const std::filesystem::path& path() const { return path_; }
 
- private:
+  /// The text of one cell as row() writes it: a number as its shortest round-trip text, a text quoted if needed.
   template <class T>
   static std::string cell(const T& v) {
     if constexpr (std::is_arithmetic_v<T>) return format_number(static_cast<double>(v));
     else return quote(std::string(v));
   }
+
+ private:
   static std::string quote(const std::string& s);
 
   std::filesystem::path path_;

@@ -185,4 +185,28 @@ Snapshot read_snapshot(const std::filesystem::path& h5_path, std::size_t index) 
   return s;
 }
 
+std::vector<std::pair<std::string, std::string>> snapshot_header(const std::filesystem::path& h5_path) {
+  hid_t f = checked(H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open file");
+  std::vector<std::pair<std::string, std::string>> out;
+  auto text = [](hid_t obj, const char* name, const H5A_info_t*, void* data) -> herr_t {
+    hid_t attr = H5Aopen(obj, name, H5P_DEFAULT);
+    if (attr < 0) return -1;
+    hid_t type = H5Aget_type(attr);
+    if (H5Tget_class(type) == H5T_STRING) {  // the run's record: every root attribute is a text
+      std::string value(H5Tget_size(type), '\0');
+      if (H5Aread(attr, type, value.data()) >= 0) {
+        value.resize(value.find('\0') == std::string::npos ? value.size() : value.find('\0'));
+        static_cast<std::vector<std::pair<std::string, std::string>>*>(data)->emplace_back(name, value);
+      }
+    }
+    H5Tclose(type);
+    H5Aclose(attr);
+    return 0;
+  };
+  const herr_t status = H5Aiterate2(f, H5_INDEX_NAME, H5_ITER_INC, nullptr, text, &out);
+  H5Fclose(f);
+  if (status < 0) throw std::runtime_error(h5_path.string() + ": cannot read its root attributes");
+  return out;
+}
+
 }  // namespace sph

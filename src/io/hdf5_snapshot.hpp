@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/types.hpp"
@@ -46,5 +47,8 @@ class SnapshotSeries {
 Snapshot read_snapshot(const std::filesystem::path& h5_path, std::size_t index);
 /// Number of snapshots in a series file.
 std::size_t count_snapshots(const std::filesystem::path& h5_path);
+/// The run's record in a series file's root attributes (driver, target, code_version, date, param.<name>, given),
+/// as the '#' header lines of a CSV hold it: (key, value) in the order of their names.
+std::vector<std::pair<std::string, std::string>> snapshot_header(const std::filesystem::path& h5_path);
 
 }  // namespace sph

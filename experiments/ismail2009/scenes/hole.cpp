@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -14,9 +13,7 @@
 #include "core/materials.hpp"
 #include "core/run_loop.hpp"
 #include "frame/progress.hpp"
-#include "frame/run_store.hpp"
 #include "ismail2009/scenes/domain_2d.hpp"
-#include "ismail2009/scenes/hole_store.hpp"
 
 namespace scenes {
 
@@ -93,14 +90,6 @@ HoleStress hole_stress(const HoleParams& p, const sph::TlSolver2D& body, const s
 HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fractions,
                     const std::function<void(const sph::TlSolver2D&, double)>& snapshot) {
   if (p.n < 5) throw std::invalid_argument("run_hole: n >= 5");
-  const bool storable = snapshot_fractions.empty() && !snapshot;  // a snapshot needs the solver's state
-  if (storable)
-    if (auto served = serve_hole_run(p)) {
-      sph::particle_steps_reused() += static_cast<long long>(served->particles) * served->steps;
-      std::fprintf(stderr, "hole sheet %d x %d: a stored run (%s), not stepped again\n", p.n, p.n,
-                   sph::run_store_dir().c_str());
-      return *served;  // its wall_s is the stepping run's (the job that stepped it), as the resolution figure plots it
-    }
   const HoleTimes times = hole_times(p);
   const double cL = times.cL, t_ramp = times.t_ramp, omega = times.omega, t_end = times.t_end;
   sph::TlSolver2D body(hole_config(p));
@@ -184,7 +173,6 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
     r.zigzag = std::sqrt(num / std::max(den, 1e-300));
     if (snapshot) snapshot(body, body.time());
   }
-  if (storable) store_hole_run(p, r);
   return r;
 }
 
