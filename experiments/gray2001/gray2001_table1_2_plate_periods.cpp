@@ -114,6 +114,11 @@ int main(int argc, char** argv) {
       return scenes::run_plate(s, {}, "plate " + (tag.empty() ? key(row) : tag + "_" + key(row)));
     };
     auto file_of = [](const std::string& tag) { return tag.empty() ? std::string("row") : tag; };
+    // A spacing whose plates cannot fit in memory is refused before any work (else the coarse reference below, ~1 min,
+    // would run first: tests/test_bad_input.py waits for the refusal).
+    for (const Row& row : rows)
+      for (const auto& [tag, spacing] : runs_of(row))
+        scenes::check_size(scenes::table_plate_run(row.H, row.Vf, spacing, clamp, scheme, periods, crossings).plate);
     if (jobs.handled(names, [&](std::size_t i) {
           for (const auto& [tag, spacing] : runs_of(rows[i])) scenes::write_plate_run(d, file_of(tag), step(rows[i], spacing, tag));
         }))
