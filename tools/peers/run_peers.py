@@ -65,6 +65,7 @@ class Context:
 
     def __init__(self, args):
         self.build, self.out, self.quick, self.threads = args.build, args.out, args.quick, args.threads
+        self.force = args.force
         self.root, self.py = ROOT, PY
         self.env = dict(os.environ, OMP_NUM_THREADS=str(args.threads))
 
