@@ -21,7 +21,7 @@ FIGURES ?= figures
 DRIVER_FLAGS ?=
 CHECK_FLAGS  ?=
 
-DEB_PACKAGES := cmake make ninja-build g++ git pkg-config libeigen3-dev libgsl-dev libhdf5-dev libcli11-dev \
+DEB_PACKAGES := cmake make ninja-build g++ git pkg-config libeigen3-dev libxsimd-dev libgsl-dev libhdf5-dev libcli11-dev \
                 libgtest-dev libbenchmark-dev python3-matplotlib python3-pandas
 
 include experiments/targets.mk
