@@ -21,7 +21,7 @@ FIGURES ?= figures
 DRIVER_FLAGS ?=
 CHECK_FLAGS  ?=
 
-DEB_PACKAGES := cmake make ninja-build g++ git pkg-config libeigen3-dev libgsl-dev libhdf5-dev libcli11-dev \
+DEB_PACKAGES := cmake make ninja-build g++ git pkg-config libeigen3-dev libxsimd-dev libgsl-dev libhdf5-dev libcli11-dev \
                 libgtest-dev libbenchmark-dev python3-matplotlib python3-pandas
 
 include experiments/targets.mk
@@ -256,16 +256,19 @@ bench: deps build
 # BASE (built in a clone under /tmp/bench_ab) and of this checkout, alternated AB_ROUNDS times; writes
 # results/bench_ab.csv with the medians of both and their ratio. Throughputs of different sittings do not
 # compare on this shared machine. E.g. make bench-ab BASE=fc0635a AB_ARGS='bench_gray_scenes=--scenes rings'
+# AB_CMAKE_ARGS builds both sides with other CMake arguments, ours in build-ab/: e.g. an AVX2 build on an AVX-512
+# host, AB_CMAKE_ARGS='-DSPH_NATIVE=OFF -DCMAKE_CXX_FLAGS=-march=native\ -mno-avx512f'.
 BASE       ?=
 AB_ROUNDS  ?= 3
 AB_BENCHES ?= bench_gray_scenes,bench_hexagon
 AB_ARGS    ?=
+AB_CMAKE_ARGS ?=
 comma := ,
 bench-ab: deps configure
 	@[ -n "$(BASE)" ] || { echo "make bench-ab: give the revision to compare against, BASE=<rev>"; exit 2; }
 	cmake --build $(BUILD) -j $(JOBS) --target $(subst $(comma), ,$(AB_BENCHES))
 	$(PY) tools/bench_ab.py --base $(BASE) --rounds $(AB_ROUNDS) --benches $(AB_BENCHES) \
-	  $(if $(AB_ARGS),--args '$(AB_ARGS)')
+	  $(if $(AB_ARGS),--args '$(AB_ARGS)') $(if $(AB_CMAKE_ARGS),--cmake-args '$(AB_CMAKE_ARGS)')
 
 # PySPH on its own rings example (Debian python3-pysph; its Depends bring cython3, build-essential and
 # python3-all-dev, which it needs to compile its kernels at the first run) and LAMMPS MACHDYN's smd/ulsph on our

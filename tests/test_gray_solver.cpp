@@ -2,9 +2,14 @@
 // the objectivity of the stress rate, Driven particles, colliding bodies and the plastic return.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <Eigen/Eigenvalues>
+#include <array>
 #include <cstring>
 #include <random>
+#include <string>
+#include <type_traits>
 #include <typeinfo>
 
 #include "updated_lagrangian/artificial_stress.hpp"
@@ -363,63 +368,192 @@ TEST(GraySolver, PlasticReturnKeepsEveryStressOnOrInsideTheYieldSurface) {
   }
 }
 
-#if SPH_WIDE_PASS2  // the wide path exists only on AVX-512 hosts; elsewhere the scalar loop is the only one
-// The eight-wide pass 2 (pair_terms_wide.hpp, AVX-512) against the scalar loop, bit for bit, for every
-// combination of terms: the same pairs, the same operations, the same order of every sum. Rows of every
-// length occur (a disordered block: 0 to ~14 pairs per row, so full, partial and empty eight-pair blocks),
-// and n = 4 and n = 3 for f^n.
+// Pass 2 of the evaluation runs a block of pairs at a time, one per lane of lanes::Widest (AVX-512 8, AVX2 4,
+// one pair at a time without a SIMD fused multiply-add). Every width must give the bits of a plain scalar
+// reference, for every combination of terms: the same pairs, the same operations (products fused where the
+// reference fuses them, rounded first where it does not), the same order of every sum. The reference below
+// is the scalar loop as it was before the terms were named and written once for every width, on one thread,
+// adding each pair to both particles in row order (which is the loop's order on one thread).
+double unfused_product(double x, double y) {
+  volatile double p = x * y;  // volatile: the compiler cannot contract it into a following addition
+  return p;
+}
+
 template <class Terms>
-void expect_wide_pass2_matches_scalar(int nart) {
-  const double dp = 0.1;
-  sph::ElasticBody body = random_block(23, dp, 11, true);
-  sph::GrayParameters p = params_for(body, dp, {-1, -1, 3, 3, false, false});
-  p.n_artificial = nart;
-  const sph::CubicSpline kernel(2);
-  const double h = p.h_over_dp * dp, W_dp = kernel.W(dp, h);
-  sph::CellList2D cells(body.box, kernel.support() * h + p.skin_over_h * h);
+sph::GrayRates reference_rates(sph::ElasticBody& body, const sph::GrayParameters& p, const sph::CubicSpline& kernel,
+                               double h, double W_dp, const sph::PairList& pairs) {
+  constexpr bool as = std::is_same_v<typename Terms::tensile, sph::ArtificialStress>;
+  constexpr bool xsph = std::is_same_v<typename Terms::xsph, sph::Xsph>;
+  constexpr bool visc = std::is_same_v<typename Terms::viscosity, sph::MonaghanViscosity>;
+  constexpr bool summation = std::is_same_v<typename Terms::density, sph::SummationDensity>;
+  const std::size_t n = body.size();
+  const auto& v = body.v;
+  const auto& m = body.m;
+  auto& rho = body.rho;
+  std::vector<Vec2> xs(n, Vec2::Zero());  // pass 1: the XSPH sum (3.6) and the summation density
+  std::vector<double> rs(n, 0.0);
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::uint32_t k = pairs.first(a); k < pairs.last(a); ++k) {
+      const std::uint32_t b = pairs.b[k];
+      const Vec2 w = (v[b] - v[a]) * (pairs.W[k] / (0.5 * (rho[a] + rho[b])));
+      xs[a] += m[b] * w;
+      xs[b] -= m[a] * w;
+      rs[a] += m[b] * pairs.W[k];
+      rs[b] += m[a] * pairs.W[k];
+    }
+  std::vector<Vec2> vhat(n);
+  std::vector<Tensor2> A(n), R(n, Tensor2::Zero());
+  std::vector<double> V(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    vhat[a] = xsph ? Vec2(v[a] + p.eps_xsph * xs[a]) : v[a];
+    if (summation) rho[a] = rs[a] + m[a] * kernel.W(0.0, h);
+    const Tensor2 sigma = body.S[a] - sph::linear_eos_pressure(rho[a], p.rho0, p.c0) * Tensor2::Identity();
+    A[a] = sigma / (rho[a] * rho[a]);
+    if (as) R[a] = sph::artificial_stress(sigma, rho[a], p.eps_artificial);
+    V[a] = m[a] / rho[a];
+  }
+  std::vector<std::array<double, 7>> s(n, std::array<double, 7>{});  // pass 2
+  const double eta2 = 0.01 * h * h;
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::uint32_t k = pairs.first(a); k < pairs.last(a); ++k) {
+      const std::uint32_t b = pairs.b[k];
+      const Vec2 d = pairs.dx[k], gW = d * pairs.F[k];
+      double M[4];
+      for (int c = 0; c < 4; ++c) M[c] = A[a].data()[c] + A[b].data()[c];
+      if (as) {
+        const double f = pairs.W[k] * (1.0 / W_dp);
+        double fn = 1.0;
+        for (int i = 0; i < p.n_artificial; ++i) fn *= f;
+        for (int c = 0; c < 4; ++c) M[c] = std::fma(R[a].data()[c] + R[b].data()[c], fn, M[c]);
+      }
+      const Vec2 dv = v[a] - v[b];
+      const double vr = unfused_product(dv.x(), d.x()) + unfused_product(dv.y(), d.y());
+      if (visc && vr < 0.0) {
+        const double r2 = unfused_product(d.x(), d.x()) + unfused_product(d.y(), d.y());
+        const double mu = h * vr / (r2 + eta2);
+        const double Pi = std::fma(-p.alpha * p.c0, mu, p.beta * mu * mu) / (0.5 * (rho[a] + rho[b]));
+        M[0] -= Pi;
+        M[3] -= Pi;
+      }
+      const Vec2 u = vhat[a] - vhat[b];
+      const double t[7] = {std::fma(M[2], gW.y(), M[0] * gW.x()), std::fma(M[3], gW.y(), M[1] * gW.x()),
+                           summation ? 0.0 : unfused_product(u.x(), gW.x()) + unfused_product(u.y(), gW.y()),
+                           u.x() * gW.x(), u.y() * gW.x(), u.x() * gW.y(), u.y() * gW.y()};
+      for (int c = 0; c < 7; ++c) {
+        s[a][c] = std::fma(c < 3 ? m[b] : -V[b], t[c], s[a][c]);
+        s[b][c] = std::fma(c < 2 ? -m[a] : c == 2 ? m[a] : -V[a], t[c], s[b][c]);
+      }
+    }
+  sph::GrayRates r;
+  sph::resize_fields(r, n);
+  for (std::size_t a = 0; a < n; ++a) {
+    Tensor2 grad_v;
+    for (int c = 0; c < 4; ++c) grad_v.data()[c] = s[a][3 + c];
+    r.dv[a] = Vec2(s[a][0], s[a][1]);  // every particle Free
+    r.dx[a] = r.vhat[a] = vhat[a];
+    r.drho[a] = summation ? 0.0 : s[a][2];
+    r.dS[a] = sph::hooke_deviatoric_rate(p.mu, grad_v, body.S[a]);
+  }
+  return r;
+}
+
+// Rows of every length occur (a disordered block: 0 to ~14 pairs per row, so full, partial and empty blocks of
+// every width), and n = 4 and n = 3 for f^n.
+struct WidthCase {
+  sph::ElasticBody body;
+  sph::GrayParameters p;
+  sph::CubicSpline kernel{2};
+  double h, W_dp;
   sph::PairList pairs;
-  pairs.half = true;
-  pairs.update(cells, body.x, kernel.support() * h, p.skin_over_h * h, kernel.at(h));
-  auto rates_of = [&](auto evaluate, sph::ElasticBody& b) {
+  explicit WidthCase(int nart) : body(random_block(23, 0.1, 11, true)) {
+    p = params_for(body, 0.1, {-1, -1, 3, 3, false, false});
+    p.n_artificial = nart;
+    h = p.h_over_dp * body.dp;
+    W_dp = kernel.W(body.dp, h);
+    sph::CellList2D cells(body.box, kernel.support() * h + p.skin_over_h * h);
+    pairs.half = true;
+    pairs.update(cells, body.x, kernel.support() * h, p.skin_over_h * h, kernel.at(h));
+  }
+  template <class Terms, class V>
+  sph::GrayRates rates(sph::ElasticBody& b) const {
     sph::GrayScratch scratch;
-    scratch.sigma_over_rho2.assign(b.size(), Tensor2::Zero());
-    scratch.volume.assign(b.size(), 0.0);
-    scratch.R.assign(b.size(), Tensor2::Zero());
     sph::GrayRates r;
     sph::resize_fields(r, b.size());
-    evaluate(b, p, kernel, h, W_dp, pairs, scratch, r);
+    sph::evaluate_gray_rates<Terms, V>(b, p, kernel, h, W_dp, pairs, scratch, r);
     return r;
-  };
-  sph::ElasticBody b_scalar = body, b_wide = body;
-  const sph::GrayRates scalar = rates_of(&sph::evaluate_gray_rates<Terms, false>, b_scalar);
-  const sph::GrayRates wide = rates_of(&sph::evaluate_gray_rates<Terms, true>, b_wide);
-  auto same_bits = [](const auto& u, const auto& w) {
-    return u.size() == w.size() && std::memcmp(u.data(), w.data(), u.size() * sizeof(u[0])) == 0;
-  };
-  const char* terms = typeid(Terms).name();
-  EXPECT_TRUE(same_bits(scalar.dv, wide.dv)) << terms << " n = " << nart;
-  EXPECT_TRUE(same_bits(scalar.drho, wide.drho)) << terms;
-  EXPECT_TRUE(same_bits(scalar.dS, wide.dS)) << terms;
-  EXPECT_TRUE(same_bits(scalar.dx, wide.dx)) << terms;
-  EXPECT_TRUE(same_bits(b_scalar.rho, b_wide.rho)) << terms;
+  }
+};
+
+template <class U, class W>
+bool same_bits(const U& u, const W& w) {
+  return u.size() == w.size() && std::memcmp(u.data(), w.data(), u.size() * sizeof(u[0])) == 0;
+}
+#define EXPECT_SAME_RATES(x, y, what)                                                                      \
+  do {                                                                                                     \
+    EXPECT_TRUE(same_bits(x.dv, y.dv)) << what;                                                            \
+    EXPECT_TRUE(same_bits(x.drho, y.drho)) << what;                                                        \
+    EXPECT_TRUE(same_bits(x.dS, y.dS)) << what;                                                            \
+    EXPECT_TRUE(same_bits(x.dx, y.dx)) << what;                                                            \
+    EXPECT_TRUE(same_bits(x.vhat, y.vhat)) << what;                                                        \
+  } while (0)
+
+// Two lanes where the target has a fused multiply-add for them (x86 with FMA: SSE batches; Arm: NEON).
+#if defined(__FMA__) && XSIMD_WITH_SSE4_2
+using TwoLanes = xsimd::batch<double, xsimd::sse4_2>;
+#elif XSIMD_WITH_NEON64
+using TwoLanes = xsimd::batch<double, xsimd::neon64>;
+#else
+using TwoLanes = double;
+#endif
+
+template <class Terms>
+void expect_every_width_gives_the_reference_bits(int nart) {
+  const WidthCase w(nart);
+  const std::string terms = std::string(typeid(Terms).name()) + " n = " + std::to_string(nart);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  sph::ElasticBody b_ref = w.body, b1 = w.body, b2 = w.body, bw = w.body;
+  const sph::GrayRates ref = reference_rates<Terms>(b_ref, w.p, w.kernel, w.h, w.W_dp, w.pairs);
+  const sph::GrayRates one = w.rates<Terms, double>(b1), two = w.rates<Terms, TwoLanes>(b2);
+  const sph::GrayRates widest = w.rates<Terms, sph::lanes::Widest>(bw);
+  EXPECT_SAME_RATES(ref, one, terms << ", one pair at a time");
+  EXPECT_SAME_RATES(ref, two, terms << ", " << sph::lanes::width<TwoLanes> << " lanes");
+  EXPECT_SAME_RATES(ref, widest, terms << ", " << sph::lanes::width<sph::lanes::Widest> << " lanes");
+  EXPECT_TRUE(same_bits(b_ref.rho, bw.rho)) << terms;
+  // On two threads the sums run in another order (the threads' partial sums), the same for every width.
+  omp_set_num_threads(2);
+  sph::ElasticBody c1 = w.body, cw = w.body;
+  const sph::GrayRates one2 = w.rates<Terms, double>(c1), widest2 = w.rates<Terms, sph::lanes::Widest>(cw);
+  EXPECT_SAME_RATES(one2, widest2, terms << ", two threads");
+  omp_set_num_threads(threads);
   double largest = 0;  // the forces are not trivially zero
-  for (const Vec2& a : wide.dv) largest = std::max(largest, a.norm());
+  for (const Vec2& a : widest.dv) largest = std::max(largest, a.norm());
   EXPECT_GT(largest, 1e-3) << terms;
 }
 
-TEST(GraySolver, WidePassTwoGivesTheScalarBitsForEveryTerm) {
-  using sph::GrayTerms;
-  for (int nart : {4, 3}) {
-    expect_wide_pass2_matches_scalar<GrayTerms<true, true, true, false>>(nart);
-    expect_wide_pass2_matches_scalar<GrayTerms<true, true, true, true>>(nart);
-    expect_wide_pass2_matches_scalar<GrayTerms<true, false, true, false>>(nart);
-    expect_wide_pass2_matches_scalar<GrayTerms<true, false, false, true>>(nart);
-  }
-  expect_wide_pass2_matches_scalar<GrayTerms<false, true, true, false>>(4);
-  expect_wide_pass2_matches_scalar<GrayTerms<false, false, false, false>>(4);
-  expect_wide_pass2_matches_scalar<GrayTerms<false, true, false, true>>(4);
-  expect_wide_pass2_matches_scalar<GrayTerms<false, false, true, true>>(4);
+template <class Tensile, class Xsph, class Viscosity>
+void expect_for_both_densities(int nart) {
+  expect_every_width_gives_the_reference_bits<sph::GrayTerms<Tensile, Xsph, Viscosity, sph::ContinuityDensity>>(nart);
+  expect_every_width_gives_the_reference_bits<sph::GrayTerms<Tensile, Xsph, Viscosity, sph::SummationDensity>>(nart);
 }
-#endif
+
+TEST(GraySolver, EveryWidthOfPassTwoGivesTheScalarReferenceBitsForEveryTerm) {
+  using namespace sph;
+  for (int nart : {4, 3}) {
+    expect_for_both_densities<ArtificialStress, Xsph, MonaghanViscosity>(nart);
+    expect_for_both_densities<ArtificialStress, Xsph, NoViscosity>(nart);
+    expect_for_both_densities<ArtificialStress, NoXsph, MonaghanViscosity>(nart);
+    expect_for_both_densities<ArtificialStress, NoXsph, NoViscosity>(nart);
+  }
+  expect_for_both_densities<NoArtificialStress, Xsph, MonaghanViscosity>(4);
+  expect_for_both_densities<NoArtificialStress, Xsph, NoViscosity>(4);
+  expect_for_both_densities<NoArtificialStress, NoXsph, MonaghanViscosity>(4);
+  expect_for_both_densities<NoArtificialStress, NoXsph, NoViscosity>(4);
+}
+
+// A term that is off leaves no slot in the neighbour record: eight numbers without the artificial stress and
+// the viscosity, sixteen with either.
+static_assert(sph::NeighbourRecord<sph::GrayTerms<sph::NoArtificialStress, sph::Xsph, sph::NoViscosity, sph::ContinuityDensity>>::size == 8);
+static_assert(sph::NeighbourRecord<sph::GrayTerms<sph::ArtificialStress, sph::Xsph, sph::MonaghanViscosity, sph::ContinuityDensity>>::size == 16);
 
 }  // namespace

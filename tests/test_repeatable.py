@@ -8,7 +8,7 @@ Hoover Fig 1), the molecular dynamics (with SPAM: the rotating hexagon of Hoover
 Across thread counts (1 and 2):
   - SPAM, the molecular dynamics and the total-Lagrangian solvers gather every particle's sums in a fixed
     order whatever the thread count (full pair lists, CSR rows): identical values;
-  - Gray's scheme adds each pair to both particles through per-thread partial sums (pair_terms.hpp), whose
+  - Gray's scheme adds each pair to both particles through per-thread partial sums (pair_loop.hpp), whose
     order follows the thread count: values may differ at round-off. Bound: 1e-9 relative (with a floor of
     1e-13 for values that are themselves of round-off size): the round-off of a stable run accumulated over
     its ~5 000 steps is ~5e-13 (1.1e-16 per step), the bound leaves ~2 000x for its growth. A chaotic run

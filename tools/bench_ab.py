@@ -13,6 +13,9 @@ and the ratio ours / base of the medians, with min and max of the pairwise ratio
 machine was noisy). Writes --out (columns scene,variant,particles,threads,base,ours,base_median,
 ours_median,ratio,ratio_min,ratio_max; the '#' header records both revisions and the commands) and prints it.
 Extra arguments of a benchmark: --args 'bench_tl_hole=--n 81' (repeatable): the base must accept them too.
+Both sides built with other CMake arguments (e.g. --cmake-args '-DSPH_NATIVE=OFF "-DCMAKE_CXX_FLAGS=-march=native
+-mno-avx512f"', an AVX2 build on an AVX-512 host): the base in its clone's build-ab/, ours in this checkout's
+build-ab/ (instead of --ours).
 """
 import argparse
 import csv
@@ -34,7 +37,15 @@ def git(*args):
     return subprocess.run(["git", "-C", HERE, *args], check=True, capture_output=True, text=True).stdout.strip()
 
 
-def build_base(rev, benches, work, jobs):
+def build(src, folder, cmake_args, benches, jobs):
+    """The bench binaries of the checkout `src`, built in src/folder; returns their folder."""
+    build = os.path.join(src, folder)
+    run(["cmake", "-S", src, "-B", build, "-DCMAKE_BUILD_TYPE=Release", *cmake_args], stdout=subprocess.DEVNULL)
+    run(["cmake", "--build", build, "-j", str(jobs), "--target", *benches], stdout=subprocess.DEVNULL)
+    return os.path.join(build, "bin")
+
+
+def build_base(rev, benches, work, jobs, cmake_args):
     """The bench binaries of revision `rev`, built in a clone of this repository under `work`."""
     sha = git("rev-parse", "--short=12", rev)
     src = os.path.join(work, sha)
@@ -42,10 +53,7 @@ def build_base(rev, benches, work, jobs):
         os.makedirs(work, exist_ok=True)
         run(["git", "clone", "-q", HERE, src])
         run(["git", "-C", src, "checkout", "-q", sha])
-    build = os.path.join(src, "build")
-    run(["cmake", "-S", src, "-B", build, "-DCMAKE_BUILD_TYPE=Release"], stdout=subprocess.DEVNULL)
-    run(["cmake", "--build", build, "-j", str(jobs), "--target", *benches], stdout=subprocess.DEVNULL)
-    return sha, os.path.join(build, "bin")
+    return sha, build(src, "build-ab" if cmake_args else "build", cmake_args, benches, jobs)
 
 
 def throughputs(path):
@@ -69,7 +77,9 @@ def main():
     ap.add_argument("--ours", default=os.path.join(HERE, "build", "bin"))
     ap.add_argument("--out", default=os.path.join(HERE, "results", "bench_ab.csv"))
     ap.add_argument("--work", default=os.environ.get("WORK", "/tmp/bench_ab"))
+    ap.add_argument("--cmake-args", default="", help="CMake arguments of both sides (ours then in build-ab/)")
     a = ap.parse_args()
+    cmake_args = shlex.split(a.cmake_args)
     if a.rounds < 1:
         sys.exit("bench_ab: --rounds must be at least 1")
     benches = [b for b in a.benches.split(",") if b]
@@ -79,10 +89,12 @@ def main():
         if not sep or name not in benches:
             sys.exit(f"bench_ab: --args {spec!r}: expected BENCH=ARGS with BENCH one of {benches}")
         extra[name] = shlex.split(args)
+    if cmake_args:
+        a.ours = build(HERE, "build-ab", cmake_args, benches, os.cpu_count() or 2)
     for b in benches:
         if not os.access(os.path.join(a.ours, b), os.X_OK):
             sys.exit(f"bench_ab: {os.path.join(a.ours, b)} is missing: build it first (make build)")
-    base_sha, base_bin = build_base(a.base, benches, a.work, os.cpu_count() or 2)
+    base_sha, base_bin = build_base(a.base, benches, a.work, os.cpu_count() or 2, cmake_args)
     ours_rev = git("describe", "--always", "--dirty", "--abbrev=12")
     rates = {"base": {}, "ours": {}}
     commands = []
@@ -105,6 +117,8 @@ def main():
     with open(a.out, "w", newline="") as f:
         f.write(f"# base = {a.base} ({base_sha})\n# ours = {ours_rev} ({a.ours})\n# rounds = {a.rounds}, "
                 "alternated base then ours\n")
+        if cmake_args:
+            f.write(f"# cmake args of both = {a.cmake_args}\n")
         for c in commands:
             f.write(f"# command = {c}\n")
         w = csv.writer(f)

@@ -46,6 +46,10 @@ struct PairList {
   /// Every pair once, in the row of its lower index (b > a), for formulations that add a pair's terms to
   /// both of its particles; otherwise every pair twice (a->b and b->a), for those that gather.
   bool half = false;
+  /// Slots past the last candidate in b, dx, W and F: a loop over blocks of up to this many pairs
+  /// (updated_lagrangian/pair_loop.hpp) reads a whole block from any pair on without leaving the arrays (it
+  /// does not use what it reads past a row's end).
+  static constexpr std::size_t kBlockSlack = 8;
 
   std::uint32_t first(std::size_t a) const { return start[a]; }
   std::uint32_t last(std::size_t a) const { return start[a] + active[a]; }
@@ -107,10 +111,10 @@ struct PairList {
         for (long a = 0; a < n; ++a) start[a + 1] += start[a];
         const std::size_t total = start[n];
         cand.resize(total);
-        b.resize(total);
-        dx.resize(total);
-        W.resize(total);
-        F.resize(total);
+        b.resize(total + kBlockSlack);
+        dx.resize(total + kBlockSlack);
+        W.resize(total + kBlockSlack);
+        F.resize(total + kBlockSlack);
         active.resize(n);
         reach.resize(n);
       }

@@ -26,10 +26,7 @@ GraySolver::GraySolver(ElasticBody& body, const GrayParameters& params, const Gr
   const std::size_t n = body_.size();
   resize_fields(r0_, n);
   resize_fields(r1_, n);
-  scratch_.sigma_over_rho2.assign(n, Tensor2::Zero());
-  scratch_.volume.assign(n, 0.0);
-  pairs_.half = true;  // every pair once: pair_terms.hpp adds it to both particles
-  if (o_.artificial_stress) scratch_.R.assign(n, Tensor2::Zero());
+  pairs_.half = true;  // every pair once: pair_loop.hpp adds it to both particles
   rebuild_pairs();
 }
 

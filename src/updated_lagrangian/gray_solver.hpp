@@ -2,8 +2,9 @@
 //   acceleration (3.1) with the artificial stress (3.12)-(3.14) in principal axes (6.1)-(6.9),
 //   XSPH velocity (3.6) used for positions, density and velocity gradients,
 //   continuity (3.8) or summation density, EOS (2.7), Hooke deviatoric stress rate (2.3)-(2.5) with the
-//   velocity gradient (3.10), Monaghan's artificial viscosity (pair_terms.hpp), and the predictor-corrector
-//   leapfrog (6.14)-(6.18) with two force evaluations per step (core/predictor_corrector.hpp). Optional
+//   velocity gradient (3.10), Monaghan's artificial viscosity (the terms: pair_terms.hpp; their loop:
+//   pair_loop.hpp), and the predictor-corrector leapfrog (6.14)-(6.18) with two force evaluations per step
+//   (core/predictor_corrector.hpp). Optional
 //   perfectly plastic von Mises yield (Section 7.3): a radial return of S after each stress update, a
 //   separate pass that only runs if enabled.
 // Particle kinds (elastic_body.hpp): Free particles move with the forces (and the XSPH velocity), Fixed ones
@@ -21,7 +22,7 @@
 #include "core/neighbours.hpp"
 #include "core/pair_list.hpp"
 #include "updated_lagrangian/elastic_body.hpp"
-#include "updated_lagrangian/pair_terms.hpp"
+#include "updated_lagrangian/pair_loop.hpp"
 #include "updated_lagrangian/parameters.hpp"
 
 namespace sph {

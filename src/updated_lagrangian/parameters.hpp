@@ -6,8 +6,8 @@
 
 namespace sph {
 
-/// The terms a scene uses. GraySolver maps them once, at construction, onto a compile-time instance of the
-/// pair loop (pair_terms.hpp): a term that is off is not in the loop at all.
+/// The terms a scene uses. GraySolver maps them once, at construction, onto a list of named terms (GrayTerms,
+/// pair_terms.hpp) and the pair loop for it (pair_loop.hpp): a term that is off is not in the loop at all.
 struct GrayOptions {
   bool artificial_stress = true;   ///< R_ab f^n term (3.12)
   bool xsph = true;                ///< move with and differentiate the XSPH velocity (3.6)
