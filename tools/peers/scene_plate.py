@@ -69,6 +69,12 @@ def case_name(case):
     return f"{row_name(H, Vf, mu)}_dp{dp:g}" + ("_lammps" if lammps_only else "")
 
 
+def missing(case, rows):
+    """The variants of a case that its runs.csv lacks (a variant added since the case ran)."""
+    have = {r["variant"] if r["code"] == "pysph" else f"lammps_{r['variant']}" for r in rows if r["code"] != "ours"}
+    return [v for v in case[4] if v not in have]
+
+
 def run_case(ctx, case, d):
     H, Vf, mu, dp, variants = case
     row = row_name(H, Vf, mu)
