@@ -63,7 +63,10 @@ def block(results):
     if not os.path.exists(check_path):
         fail(f"{check_path} missing: run make figures (or make check) first")
     check = read_csv(check_path)
-    values = [os.path.join(dp, f) for dp, _, fs in os.walk(results) for f in fs if f.startswith("values_")]
+    # The targets' own folders only: results/ also holds make test's quick, Slurm and peer runs (results/quick, ...).
+    targets = {r["target"] for r in read_csv(os.path.join(ROOT, "paper", "targets.csv"))}
+    values = [os.path.join(dp, f) for t in sorted(targets) for dp, _, fs in os.walk(os.path.join(results, t))
+              for f in fs if f.startswith("values_")]
     versions, quick = set(), False
     for v in values:
         with open(v) as f:
