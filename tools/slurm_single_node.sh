@@ -33,7 +33,7 @@ start() {
   fi
   local host node
   host=$(hostname -s)
-  node=$(slurmd -C | head -1)  # NodeName=<host> CPUs=... RealMemory=...
+  node=$(slurmd -C | sed -n 1p)  # NodeName=<host> CPUs=... RealMemory=...
   cat > "$CONF" <<EOF
 # Written by tools/slurm_single_node.sh: a single-node Slurm for make test-slurm.
 ClusterName=sph-local

@@ -63,7 +63,10 @@ def block(results):
     if not os.path.exists(check_path):
         fail(f"{check_path} missing: run make figures (or make check) first")
     check = read_csv(check_path)
-    values = [os.path.join(dp, f) for dp, _, fs in os.walk(results) for f in fs if f.startswith("values_")]
+    titles = {r["target"]: (r["title"], r["work"].split(",")[0]) for r in read_csv(os.path.join(ROOT, "paper", "targets.csv"))}
+    # The targets' own folders only: results/ also holds make test's quick, Slurm and peer runs (results/quick, ...).
+    values = [os.path.join(dp, f) for t in sorted(titles) for dp, _, fs in os.walk(os.path.join(results, t))
+              for f in fs if f.startswith("values_")]
     versions, quick = set(), False
     for v in values:
         with open(v) as f:
@@ -76,7 +79,6 @@ def block(results):
                     quick = True
     if quick:
         fail(f"{results} holds --quick runs: the table is of a full run (make figures)")
-    titles = {r["target"]: (r["title"], r["work"].split(",")[0]) for r in read_csv(os.path.join(ROOT, "paper", "targets.csv"))}
     date = subprocess.run(["date", "-u", "-r", check_path, "+%Y-%m-%d"], capture_output=True, text=True).stdout.strip()
     rows = table_rows(check, titles)
     own = [r for r in check if r.get("kind") != "peer"]

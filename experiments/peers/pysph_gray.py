@@ -8,9 +8,17 @@ by experiments/peers/pysph_plate.py and pysph_rings.py (issue 44):
   HeldScheme               ElasticSolidsScheme with HeldParticles for the arrays in `held`, and with continuity =
                            "xsph" the three above in place of PySPH's: then PySPH runs our equations (Gray 2001
                            "differentiate the XSPH velocity"), and only the integrator (EPEC) and the code differ
+  GrayPCStep,              Gray 2001's predictor-corrector (6.14)-(6.18) in place of EPEC (integrator = "gray"):
+  GrayPCIntegrator         with continuity = "xsph" PySPH then runs our equations and our integrator, and only the
+                           code differs (its kernel, neighbour search and sums, in their order)
 """
 from pysph.sph.equation import Equation, Group
+from pysph.sph.integrator import Integrator
+from pysph.sph.integrator_step import IntegratorStep
 from pysph.sph.solid_mech.basic import ElasticSolidsScheme
+
+# The rates at the start of a step, kept by GrayPCStep's predictor for its corrector.
+GRAY_PC_PROPERTIES = ("au_0", "av_0", "arho_0", "as00_0", "as01_0", "as11_0")
 
 
 def add_xsph_properties(pa):
@@ -104,3 +112,59 @@ class HeldScheme(ElasticSolidsScheme):
             eqs.insert(0, Group(equations=[XSPHVelocity(dest=d, sources=sources, eps=self.xsph_eps)
                                            for d in self.elastic_solids]))
         return eqs
+
+
+def add_gray_pc_properties(pa):
+    """The start-of-step rates GrayPCStep keeps (one per integrated field)."""
+    for name in GRAY_PC_PROPERTIES:
+        pa.add_property(name)
+
+
+class GrayPCStep(IntegratorStep):
+    """Gray, Monaghan & Swift 2001 (6.14)-(6.18), as src/core/predictor_corrector.hpp runs it (2D): the predictor
+    moves the particles with the XSPH velocity (d_ax, d_ay: XSPHCorrection's, zero for a held particle) and the
+    acceleration at the start of the step, and its positions are final (6.15); the corrector corrects velocity,
+    density and stress by half a step times the change of their rates (6.17)-(6.18)."""
+
+    def stage1(self, d_idx, d_x, d_y, d_u, d_v, d_rho, d_s00, d_s01, d_s11, d_ax, d_ay, d_au, d_av, d_arho,
+               d_as00, d_as01, d_as11, d_au_0, d_av_0, d_arho_0, d_as00_0, d_as01_0, d_as11_0, dt):
+        d_au_0[d_idx] = d_au[d_idx]
+        d_av_0[d_idx] = d_av[d_idx]
+        d_arho_0[d_idx] = d_arho[d_idx]
+        d_as00_0[d_idx] = d_as00[d_idx]
+        d_as01_0[d_idx] = d_as01[d_idx]
+        d_as11_0[d_idx] = d_as11[d_idx]
+        half_dt2 = 0.5 * dt * dt
+        d_x[d_idx] += dt * d_ax[d_idx] + half_dt2 * d_au[d_idx]
+        d_y[d_idx] += dt * d_ay[d_idx] + half_dt2 * d_av[d_idx]
+        d_u[d_idx] += dt * d_au[d_idx]
+        d_v[d_idx] += dt * d_av[d_idx]
+        d_rho[d_idx] += dt * d_arho[d_idx]
+        d_s00[d_idx] += dt * d_as00[d_idx]
+        d_s01[d_idx] += dt * d_as01[d_idx]
+        d_s11[d_idx] += dt * d_as11[d_idx]
+
+    def stage2(self, d_idx, d_u, d_v, d_rho, d_s00, d_s01, d_s11, d_au, d_av, d_arho, d_as00, d_as01, d_as11,
+               d_au_0, d_av_0, d_arho_0, d_as00_0, d_as01_0, d_as11_0, dt):
+        half_dt = 0.5 * dt
+        d_u[d_idx] += half_dt * (d_au[d_idx] - d_au_0[d_idx])
+        d_v[d_idx] += half_dt * (d_av[d_idx] - d_av_0[d_idx])
+        d_rho[d_idx] += half_dt * (d_arho[d_idx] - d_arho_0[d_idx])
+        d_s00[d_idx] += half_dt * (d_as00[d_idx] - d_as00_0[d_idx])
+        d_s01[d_idx] += half_dt * (d_as01[d_idx] - d_as01_0[d_idx])
+        d_s11[d_idx] += half_dt * (d_as11[d_idx] - d_as11_0[d_idx])
+
+
+class GrayPCIntegrator(Integrator):
+    """Evaluate, predict (6.14)-(6.16), evaluate at the predicted state, correct (6.17)-(6.18): two evaluations a
+    step, as ours (the first at the corrected state of the step before)."""
+
+    def one_timestep(self, t, dt):
+        self.compute_accelerations()
+        self.stage1()
+        self.update_domain()
+        self.do_post_stage(dt, 1)
+        self.compute_accelerations()
+        self.stage2()
+        self.update_domain()
+        self.do_post_stage(dt, 2)

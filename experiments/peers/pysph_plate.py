@@ -19,8 +19,10 @@ The velocity of continuity (3.8) and of the velocity gradient (3.10), two ways (
   xsph     ours, Gray 2001 (3.6) ("differentiate the XSPH velocity"): vhat = v + eps sum m_b v_ba W_ab / rho_ab,
            summed first (XSPHVelocity, a group before the velocity gradient), then continuity and the velocity
            gradient of vhat (ContinuityXSPH, VelocityGradient2DXSPH): with it the peer runs our equations.
-What stays PySPH's and differs from ours: its integrator is EPEC (two force evaluations a step), ours the
-predictor-corrector of src/core/predictor_corrector.hpp; its kernel and pair sums are its own code.
+The integrator, two ways (--integrator):
+  epec     (default) PySPH's own, EPEC (two force evaluations a step).
+  gray     ours, Gray 2001 (6.14)-(6.18) (pysph_gray.GrayPCStep): with --continuity xsph only the code differs.
+What stays PySPH's in every variant: its kernel, neighbour search and pair sums are its own code.
 """
 import os
 import sys
@@ -34,7 +36,7 @@ from pysph.sph.solid_mech.basic import get_particle_array_elastic_dynamics
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import peer_io  # noqa: E402
-from pysph_gray import HeldScheme, add_xsph_properties  # noqa: E402
+from pysph_gray import GrayPCIntegrator, GrayPCStep, HeldScheme, add_gray_pc_properties, add_xsph_properties  # noqa: E402
 
 
 class PeerPlate(Application):
@@ -44,6 +46,8 @@ class PeerPlate(Application):
         group.add_argument("--clamp", choices=["ours", "walls"], default="ours")
         group.add_argument("--continuity", choices=["v", "xsph"], default="v",
                            help="the velocity of continuity and the velocity gradient: PySPH's v or our XSPH velocity")
+        group.add_argument("--integrator", choices=["epec", "gray"], default="epec",
+                           help="PySPH's EPEC or Gray 2001's predictor-corrector (6.14)-(6.18), as ours")
 
     def consume_user_options(self):
         o = self.options
@@ -51,6 +55,7 @@ class PeerPlate(Application):
         self.layout = peer_io.read_table(os.path.join(o.layout, "layout.csv"))
         self.clamp = o.clamp
         self.continuity = o.continuity
+        self.integrator = o.integrator
         self.trace_path = o.trace
 
     def create_particles(self):
@@ -65,6 +70,7 @@ class PeerPlate(Application):
         plate.add_property("fixed")
         plate.fixed[:] = fixed[keep]
         add_xsph_properties(plate)
+        add_gray_pc_properties(plate)
         self.tip = int(np.flatnonzero(tip[keep] > 0.5)[0])
         self.y0 = plate.y[self.tip]
         arrays = [plate]
@@ -93,8 +99,9 @@ class PeerPlate(Application):
         # With --clamp walls no particle of the plate array is held: HeldParticles then changes nothing.
         self.scheme.configure(solids=["wall"] if self.clamp == "walls" else [], artificial_stress_eps=s["eps_artificial"],
                               xsph_eps=s["eps_xsph"], alpha=s["alpha"], beta=s["beta"])
+        gray = dict(integrator_cls=GrayPCIntegrator, extra_steppers={"plate": GrayPCStep()}) if self.integrator == "gray" else {}
         self.scheme.configure_solver(kernel=CubicSpline(dim=2), dt=s["dt"], tf=s["t_end"], pfreq=1 << 30,
-                                     adaptive_timestep=False)
+                                     adaptive_timestep=False, **gray)
 
     def pre_step(self, solver):
         if not hasattr(self, "samples"):
@@ -124,7 +131,8 @@ class PeerPlate(Application):
     def write_trace(self, steps):
         wall = time.time() - self.t_start
         with open(self.trace_path, "w") as f:
-            peer_io.write_header(f, {"peer": "pysph", "clamp": self.clamp, "continuity": self.continuity, "steps": steps,
+            peer_io.write_header(f, {"peer": "pysph", "clamp": self.clamp, "continuity": self.continuity,
+                                     "integrator": self.integrator, "steps": steps,
                                      "wall_s": f"{wall:.6g}",
                                      "particles": sum(pa.get_number_of_particles() for pa in self.particles)})
             f.write("t,y_tip\n")

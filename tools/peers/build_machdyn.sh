@@ -117,8 +117,12 @@ for h in /usr/include/lammps/*.h; do
     cmp -s "$h" "$SRCDIR/src/$(basename "$h")" || die "$h differs from $SRCDIR/src/$(basename "$h")"
 done
 LIBLMP=$(pkg-config --variable=libdir liblammps)/liblammps.so
-if ldd "$LIBLMP" | grep -q 'libmpi\.so'; then
-    CXX=${CXX_MPI:-mpicxx}; mpi_note="liblammps links $(ldd "$LIBLMP" | awk '/libmpi\.so/{print $1}') -> $CXX ($($CXX --showme:version 2>&1 | head -1))"
+# ldd's output is read whole before grep: under pipefail, `ldd | grep -q` fails when grep's early exit kills ldd
+# with SIGPIPE, which took the STUBS branch on a host whose liblammps links Open MPI (CI of stop 50: undefined
+# MPI_Allreduce(void*, void*, int, int, int, int) at link time).
+LDD_OUT=$(ldd "$LIBLMP")
+if grep -q 'libmpi\.so' <<<"$LDD_OUT"; then
+    CXX=${CXX_MPI:-mpicxx}; mpi_note="liblammps links $(awk '/libmpi\.so/{print $1}' <<<"$LDD_OUT") -> $CXX ($($CXX --showme:version 2>&1 | sed -n 1p))"
 else
     CXX=${CXX:-g++}; mpi_note="liblammps has no MPI library -> $CXX with $SRCDIR/src/STUBS"
 fi
@@ -174,8 +178,8 @@ if ((relink)) || [[ ! -f $OUT ]]; then
 else
     say "plugin up to date: $OUT"
 fi
-nm -D --defined-only "$OUT" | grep -qw lammpsplugin_init || die "$OUT exports no lammpsplugin_init"
-for f in machdyn_register machdyn_enable_plugin_command; do
-    nm -D --defined-only "$OUT" | grep -qw $f || die "$OUT exports no $f"
+EXPORTS=$(nm -D --defined-only "$OUT")
+for f in lammpsplugin_init machdyn_register machdyn_enable_plugin_command; do
+    grep -qw "$f" <<<"$EXPORTS" || die "$OUT exports no $f"
 done
 say "done in $(elapsed "$t_start"): $OUT"

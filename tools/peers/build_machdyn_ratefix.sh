@@ -50,5 +50,5 @@ if [[ ! -f $OUT || $o -nt $OUT ]]; then
     nice -n 10 "$CXX" -shared -o "$OUT.tmp" "${objs[@]}" "$o" -L"$LIBDIR" -llammps -Wl,--no-undefined
     mv "$OUT.tmp" "$OUT"
 fi
-nm -D --defined-only "$OUT" | grep -qw machdyn_enable_plugin_command || die "$OUT exports no machdyn_enable_plugin_command"
+grep -qw machdyn_enable_plugin_command <<<"$(nm -D --defined-only "$OUT")" || die "$OUT exports no machdyn_enable_plugin_command"
 say "done: $OUT"

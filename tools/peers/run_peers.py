@@ -12,12 +12,13 @@ Every scene is a module tools/peers/scene_<name>.py (SCENES below, in this order
                             tool build/bin/peer_<scene> --action layout) and its trace is measured by our
                             functions (--action measure)
   compare(rows) -> [row]    the rows of compare.csv (COMPARE_COLUMNS) from all its runs rows
+  missing(case, rows)       (optional) the variants of a done case that its runs.csv lacks: the case runs again
 A case is done when <out>/<NAME>/<case>/runs.csv exists (written last): a rerun of make peers skips it and reads
 that file (--force reruns it), so an interrupted make peers resumes; --cases runs only the cases it names, and the
 tables hold every case that is done. Writes <out>/<NAME>.csv per scene run and
 <out>/compare.csv (every scene present in <out>: published | ours | peer | theory with the differences, and the
 speed per force evaluation).
-Usage: run_peers.py --build BUILD --out DIR [--quick] [--threads N] [--scenes a,b] [--cases SUBSTRING] [--force]
+Usage: run_peers.py --build BUILD --out DIR [--quick] [--threads N] [--scenes a,b] [--cases SUBSTRING[$]] [--force]
 """
 import argparse
 import csv
@@ -110,11 +111,16 @@ def run_scene(ctx, mod, args):
         name = mod.case_name(case)
         d = os.path.join(ctx.out, mod.NAME, name)
         done = os.path.join(d, "runs.csv")
-        selected = not args.cases or args.cases in name
+        selected = not args.cases or (name == args.cases[:-1] if args.cases.endswith("$") else args.cases in name)
         if os.path.exists(done) and not (args.force and selected):
-            print(f"run_peers: {mod.NAME}/{name} done before (its runs.csv; --force reruns it)")
-            rows += peer_io.read_table(done)
-            continue
+            prior = peer_io.read_table(done)
+            todo = mod.missing(case, prior) if hasattr(mod, "missing") else []
+            if not (todo and selected):
+                print(f"run_peers: {mod.NAME}/{name} done before (its runs.csv; --force reruns it)")
+                rows += prior
+                continue
+            print(f"run_peers: {mod.NAME}/{name}: its runs.csv lacks {', '.join(todo)}: run again (a scene may keep "
+                  "the runs that finished)")
         if not selected:  # not run now; the tables hold the cases that are done
             continue
         os.makedirs(d, exist_ok=True)
@@ -134,7 +140,7 @@ def main():
     ap.add_argument("--quick", action="store_true", help="a smoke run of every code path (measures nothing)")
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--scenes", default=",".join(SCENES), help="comma-separated, of " + ",".join(SCENES))
-    ap.add_argument("--cases", default="", help="only the cases whose folder name contains this")
+    ap.add_argument("--cases", default="", help="only the cases whose folder name contains this (ending in $: is this)")
     ap.add_argument("--force", action="store_true", help="rerun cases that are done")
     args = ap.parse_args()
     wanted = [s for s in args.scenes.split(",") if s]
