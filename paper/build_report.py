@@ -3,8 +3,9 @@
 
 For every target declared in experiments/targets.mk, in its order: its description from paper/targets.csv
 (choices made where the papers are silent; one row per declared target and no other, else the build
-stops), its figures (figures/<target>*.png, embedded; none is fine), and the table of published against
-reproduced values from results/check.csv with the discrepancy analyses. HTML rather than LaTeX: the
+stops), its figures (figures/<target>*.png, embedded; none is fine), the analysis its rows share
+(reference/<target>.md, plain paragraphs, written once; none is fine), and the table of published against
+reproduced values from results/check.csv, each row's note only what is particular to it. HTML rather than LaTeX: the
 report then needs nothing beyond the Python already used for the plots (TeX Live is ~1 GB of packages),
 opens in any browser, and is a single file that can be attached to a paper's supplementary material.
 """
@@ -55,6 +56,17 @@ def table_html(rows):
         cells += [status, html.escape(r.source), html.escape(r.note)]
         body.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
     return f"<table><tr>{head}</tr>{''.join(body)}</table>"
+
+
+def analysis_html(reference, target):
+    """The analysis a target's rows share, reference/<target>.md, as plain paragraphs (blank-line separated, escaped;
+    no markup is interpreted), or nothing if the target has none."""
+    path = os.path.join(reference, f"{target}.md")
+    if not os.path.exists(path):
+        return ""
+    with open(path) as f:
+        paragraphs = [" ".join(p.split()) for p in f.read().split("\n\n") if p.strip()]
+    return "".join(f"<p>{html.escape(p)}</p>" for p in paragraphs)
 
 
 def timings_html(path):
@@ -164,7 +176,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--results", default="results")
     ap.add_argument("--figures", default="figures")
-    ap.add_argument("--reference", default="reference")
+    ap.add_argument("--reference", default=os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                                                        "reference"),
+                    help="the reference folder: its <target>.md files are the analyses the report's sections show")
     ap.add_argument("--out", default="paper/build/index.html")
     args = ap.parse_args()
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -203,6 +217,7 @@ row that does not hold.</p>
         for fig in sorted(glob.glob(os.path.join(args.figures, f"{t.target}.png"))) + \
                 sorted(glob.glob(os.path.join(args.figures, f"{t.target}_*.png"))):
             parts.append(figure_html(fig))
+        parts.append(analysis_html(args.reference, t.target))
         rows = check[check.target == t.target]
         parts.append(table_html(rows) if len(rows) else "<p>No published numbers are checked for this target.</p>")
     parts.append('<h2 id="peers">Independent codes on our scenes (make peers)</h2>' + peers_html(args.results))
