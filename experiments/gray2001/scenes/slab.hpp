@@ -101,7 +101,8 @@ struct SlabRunResult {
 
 // ------------------------------------------------------------------------------------------------------------
 // The measurement of one sample, a function of the particle state only, and the run's summary from the samples:
-// run_slab measures our solver's state with them, experiments/peers/peer_slab.cpp a peer's frames.
+// run_slab measures our solver's state with them, experiments/peers/peer_slab.cpp a peer's frames. Defined in
+// slab_measure.cpp with the values below; the slab and its run in slab.cpp.
 
 /// What a sample is measured from besides the positions, fixed over a run: our slab's (slab_geometry) or the same
 /// read back from the layout a peer ran.

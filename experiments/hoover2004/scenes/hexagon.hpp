@@ -3,6 +3,8 @@
 // in rigid rotation with speed vmax = 0.1 at the vertices (omega = vmax/n), followed for the time 20 n pi
 // of one nominal revolution (2 pi / omega). Runs of molecular dynamics or any SPAM variant, sampled into
 // time series (L, energies, shape error) and position snapshots at given nominal rotation angles.
+// The runs are defined in hexagon.cpp; the drivers' side (options, variants, output files and values) in
+// hexagon_record.cpp.
 #pragma once
 
 #include <string>
