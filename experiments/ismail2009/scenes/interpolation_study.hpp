@@ -40,6 +40,9 @@ struct Curve {
   Errors err{};
 };
 
+/// The name of a cover in files and value names: "c" and the cover in spacings (c1.5).
+std::string cover_label(double cover);
+
 /// (x - 0.5)^4.
 Exact quartic();
 /// sin x.
@@ -65,7 +68,7 @@ void write_panels(sph::Driver& d, const std::vector<Panel>& panels);
 /// max and RMS errors of the `normalisation` reading.
 void write_curves(sph::Driver& d, const std::vector<Panel>& panels, const std::vector<double>& covers,
                   const Study& study, const std::string& normalisation);
-/// The measures of the text's claims under both normalisation readings (suffix _discrete for the alternative):
+/// The measures of the text's claims (interpolation_claims.cpp) under both normalisation readings (suffix _discrete for the alternative):
 /// the lattice gradient error, the boundary droop and the ghosts, refinement, the rank of the 1.5 cover, the
 /// falling edges and the compromise cover (within `fairly_good_factor` of the best cover counts as fairly good).
 void write_claims(sph::Driver& d, const std::string& kernel_name, const std::vector<Panel>& panels,
