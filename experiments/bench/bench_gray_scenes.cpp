@@ -41,7 +41,7 @@ Timing time_run(sph::ElasticBody body, const sph::GrayParameters& p, const sph::
 int main(int argc, char** argv) {
   sph::Driver d("bench_gray_scenes", "bench", "Throughput of the Gray 2001 scheme on the rings and plate scenes");
   int steps = 200, max_threads = 2;
-  d.param("steps", steps, "timed steps per run (after 5 warm-up steps)").positive();
+  d.param("steps", steps, "timed steps per run (after 5 warm-up steps)").positive().quick(5);
   d.param("max-threads", max_threads, "largest thread count (runs 1 and this)").positive();
   double cfl = sph::GrayParameters{}.cfl;  // the scheme's default: the step sets how often the pairs are re-collected
   d.param("cfl", cfl, "time-step factor of every run").positive();
@@ -52,7 +52,6 @@ int main(int argc, char** argv) {
       .delimiter(',')
       .one_of({"rings", "plate", "slab"});
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("steps")) steps = 5;
     auto out = d.csv("bench_gray_scenes.csv", {"scene", "variant", "particles", "steps", "threads", "wall_s",
                                                "particle_steps_per_s", "error_name", "error"});
     const auto want = [&](const char* s) { return std::find(scenes.begin(), scenes.end(), s) != scenes.end(); };

@@ -17,9 +17,8 @@ int main(int argc, char** argv) {
   int steps = 2000;
   d.param("shells", s.shells, "hexagon shells n").positive();
   d.param("dt", s.dt, "RK4 time step").positive();
-  d.param("steps", steps, "RK4 steps per variant").positive();
+  d.param("steps", steps, "RK4 steps per variant").positive().quick(100);
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("steps")) steps = 100;
     s.revolutions = steps * s.dt / s.revolution_time();
     s.sample_every = steps;
     auto out = d.csv("bench_hexagon.csv", {"scene", "variant", "particles", "steps", "threads", "wall_s",

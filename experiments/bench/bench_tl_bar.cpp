@@ -14,9 +14,8 @@
 int main(int argc, char** argv) {
   sph::Driver d("bench_tl_bar", "bench", "1D total Lagrangian SPH bar: time loop and matrix build");
   std::vector<double> spacings{0.15e-3, 0.075e-3, 0.0375e-3, 0.01875e-3};
-  d.param("ps", spacings, "particle spacings, m").positive();
+  d.param("ps", spacings, "particle spacings, m").positive().quick({0.6e-3, 0.3e-3});
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("ps")) spacings = {0.6e-3, 0.3e-3};
     const double L = 0.15, rho = 8000, p0 = 1e5;
     const double C = sph::p_wave_modulus(sph::lame_from_young_poisson(200e9, 0.3)), c = std::sqrt(C / rho);
     const scenes::SmoothedPulse pulse(p0, 5e-6, 0.5e-6);

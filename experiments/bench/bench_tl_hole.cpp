@@ -14,9 +14,8 @@
 int main(int argc, char** argv) {
   sph::Driver d("bench_tl_hole", "bench", "2D total Lagrangian SPH sheet with a hole: time loop and matrix build");
   std::vector<int> ns{21, 81, 201};  // 201 x 201: the resolution the I-hole study ends at
-  d.param("n", ns, "particles along a side").positive();
+  d.param("n", ns, "particles along a side").positive().quick({21});
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("n")) ns = {21};
     auto out = d.csv("bench_tl_hole.csv", {"scene", "variant", "particles", "steps", "threads", "wall_s",
                                            "particle_steps_per_s", "error_name", "error"});
     for (int n : ns) {

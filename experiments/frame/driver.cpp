@@ -28,30 +28,75 @@ std::string to_text(const T& v) {
   }
 }
 
+// The numbers a parameter holds (none for text): what a bound of DriverOption tests its default and quick value with.
+template <class T>
+std::vector<double> numbers_of(const T& v) {
+  if constexpr (std::is_arithmetic_v<T>) return {static_cast<double>(v)};
+  else if constexpr (std::is_same_v<T, std::string>) return {};
+  else {
+    std::vector<double> out;
+    for (const auto& x : v)
+      for (double y : numbers_of(x)) out.push_back(y);
+    return out;
+  }
+}
+
+// A value as --help shows it (numbers as CLI11 shows the defaults).
+template <class T>
+std::string help_text(const T& v) {
+  if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
+  else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, std::string>) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  } else {
+    if (v.empty()) return "none";
+    std::string out;
+    for (const auto& x : v) out += (out.empty() ? "" : " ") + help_text(x);
+    return out;
+  }
+}
+
 }  // namespace
 
-DriverOption& DriverOption::expected(int min, int max) {
-  o_->expected(min, max);
-  return *this;
-}
-DriverOption& DriverOption::delimiter(char c) {
-  o_->delimiter(c);
-  return *this;
-}
-DriverOption& DriverOption::one_of(const std::vector<std::string>& allowed) {
-  o_->check(CLI::IsMember(allowed));
-  return *this;
+namespace detail {
+
+struct OptionState {
+  CLI::Option* o;
+  std::string help;  // the help as registered, before the quick value is appended
+  struct Bound {
+    std::string rule;  // e.g. "> 0"
+    double limit;
+    bool (*holds)(double, double);
+  };
+  std::vector<Bound> bounds;
+  std::vector<double> quick_numbers;  // of the quick value, for bounds declared after it
+  std::function<void()> apply_quick;  // gives the variable its quick value; empty: none declared
+};
+
+namespace {
+
+// Throws std::logic_error if a number of the option's `what` (its default or quick value) breaks the bound.
+void check_declared(const OptionState& s, const OptionState::Bound& b, const std::vector<double>& numbers, const char* what) {
+  for (const double v : numbers)
+    if (!b.holds(v, b.limit))
+      throw std::logic_error(s.o->get_name() + ": the " + what + " " + format_number(v) + " is not " + b.rule);
 }
 
-DriverOption& DriverOption::bound(const char* relation, double limit, bool (*holds)(double, double)) {
+}  // namespace
+
+// A bound: the default (`current`) and any quick value must keep it, every value given must (CLI11 validator).
+void add_bound(OptionState& s, const char* relation, double limit, bool (*holds)(double, double),
+               const std::vector<double>& current) {
   std::ostringstream want;
   want << relation << " " << format_number(limit);
   const std::string rule = want.str();
-  for (const double v : current_())
-    if (!holds(v, limit))
-      throw std::logic_error(o_->get_name() + ": the default " + format_number(v) + " is not " + rule);
+  const OptionState::Bound b{rule, limit, holds};
+  check_declared(s, b, current, "default");
+  check_declared(s, b, s.quick_numbers, "quick value");
+  s.bounds.push_back(b);
   // CLI11 applies the validator to each value of a list option: empty when it holds, else the message.
-  o_->check(CLI::Validator(
+  s.o->check(CLI::Validator(
       [=](std::string& text) -> std::string {
         double v;
         std::size_t used = 0;
@@ -66,45 +111,90 @@ DriverOption& DriverOption::bound(const char* relation, double limit, bool (*hol
         return "";
       },
       rule));
+}
+
+}  // namespace detail
+
+template <class T>
+DriverOption<T>& DriverOption<T>::expected(int min, int max) {
+  s_->o->expected(min, max);
+  return *this;
+}
+template <class T>
+DriverOption<T>& DriverOption<T>::delimiter(char c) {
+  s_->o->delimiter(c);
+  return *this;
+}
+template <class T>
+DriverOption<T>& DriverOption<T>::one_of(const std::vector<std::string>& allowed) {
+  s_->o->check(CLI::IsMember(allowed));
   return *this;
 }
 
-DriverOption& DriverOption::above(double lo) { return bound(">", lo, [](double v, double l) { return v > l; }); }
-DriverOption& DriverOption::at_least(double lo) { return bound(">=", lo, [](double v, double l) { return v >= l; }); }
-DriverOption& DriverOption::below(double hi) { return bound("<", hi, [](double v, double l) { return v < l; }); }
-DriverOption& DriverOption::at_most(double hi) { return bound("<=", hi, [](double v, double l) { return v <= l; }); }
+template <class T>
+DriverOption<T>& DriverOption<T>::above(double lo) {
+  detail::add_bound(*s_, ">", lo, [](double v, double l) { return v > l; }, numbers_of(*var_));
+  return *this;
+}
+template <class T>
+DriverOption<T>& DriverOption<T>::at_least(double lo) {
+  detail::add_bound(*s_, ">=", lo, [](double v, double l) { return v >= l; }, numbers_of(*var_));
+  return *this;
+}
+template <class T>
+DriverOption<T>& DriverOption<T>::below(double hi) {
+  detail::add_bound(*s_, "<", hi, [](double v, double l) { return v < l; }, numbers_of(*var_));
+  return *this;
+}
+template <class T>
+DriverOption<T>& DriverOption<T>::at_most(double hi) {
+  detail::add_bound(*s_, "<=", hi, [](double v, double l) { return v <= l; }, numbers_of(*var_));
+  return *this;
+}
+
+template <class T>
+DriverOption<T>& DriverOption<T>::quick(const T& v) {
+  const std::vector<double> numbers = numbers_of(v);
+  for (const auto& b : s_->bounds) detail::check_declared(*s_, b, numbers, "quick value");
+  s_->quick_numbers = numbers;
+  s_->apply_quick = [var = var_, v] { *var = v; };
+  s_->o->description(s_->help + " (--quick: " + help_text(v) + ")");
+  return *this;
+}
+
+// The parameter types of the drivers (a type missing here is a link error naming it).
+template class DriverOption<bool>;
+template class DriverOption<int>;
+template class DriverOption<unsigned>;
+template class DriverOption<long>;
+template class DriverOption<double>;
+template class DriverOption<std::string>;
+template class DriverOption<std::vector<int>>;
+template class DriverOption<std::vector<double>>;
+template class DriverOption<std::vector<std::string>>;
 
 Driver::~Driver() = default;
 
-// The numbers a parameter holds (none for text): what a bound of DriverOption tests its default with.
-template <class T>
-std::vector<double> numbers_of(const T& v) {
-  if constexpr (std::is_arithmetic_v<T>) return {static_cast<double>(v)};
-  else if constexpr (std::is_same_v<T, std::string>) return {};
-  else {
-    std::vector<double> out;
-    for (const auto& x : v)
-      for (double y : numbers_of(x)) out.push_back(y);
-    return out;
-  }
+detail::OptionState& Driver::add_state(CLI::Option* o, const std::string& help) {
+  options_.push_back(std::make_unique<detail::OptionState>(detail::OptionState{o, help, {}, {}, {}}));
+  return *options_.back();
 }
 
 template <class T>
-DriverOption Driver::param(const std::string& name, T& var, const std::string& help) {
+DriverOption<T> Driver::param(const std::string& name, T& var, const std::string& help) {
   auto* opt = app_->add_option("--" + name, var, help)->capture_default_str();
   recorders_.emplace_back(name, [&var] { return to_text(var); });
-  return DriverOption(opt, [&var] { return numbers_of(var); });
+  return DriverOption<T>(add_state(opt, help), var);
 }
-// The parameter types of the drivers (a type missing here is a link error naming it).
-template DriverOption Driver::param(const std::string&, bool&, const std::string&);
-template DriverOption Driver::param(const std::string&, int&, const std::string&);
-template DriverOption Driver::param(const std::string&, unsigned&, const std::string&);
-template DriverOption Driver::param(const std::string&, long&, const std::string&);
-template DriverOption Driver::param(const std::string&, double&, const std::string&);
-template DriverOption Driver::param(const std::string&, std::string&, const std::string&);
-template DriverOption Driver::param(const std::string&, std::vector<int>&, const std::string&);
-template DriverOption Driver::param(const std::string&, std::vector<double>&, const std::string&);
-template DriverOption Driver::param(const std::string&, std::vector<std::string>&, const std::string&);
+template DriverOption<bool> Driver::param(const std::string&, bool&, const std::string&);
+template DriverOption<int> Driver::param(const std::string&, int&, const std::string&);
+template DriverOption<unsigned> Driver::param(const std::string&, unsigned&, const std::string&);
+template DriverOption<long> Driver::param(const std::string&, long&, const std::string&);
+template DriverOption<double> Driver::param(const std::string&, double&, const std::string&);
+template DriverOption<std::string> Driver::param(const std::string&, std::string&, const std::string&);
+template DriverOption<std::vector<int>> Driver::param(const std::string&, std::vector<int>&, const std::string&);
+template DriverOption<std::vector<double>> Driver::param(const std::string&, std::vector<double>&, const std::string&);
+template DriverOption<std::vector<std::string>> Driver::param(const std::string&, std::vector<std::string>&, const std::string&);
 
 bool Driver::given(const std::string& name) const { return app_->count("--" + name) > 0; }
 
@@ -117,13 +207,13 @@ Driver::Driver(std::string name, std::string target, std::string description)
   recorders_.emplace_back("quick", [this] { return to_text(quick_); });
 }
 
-DriverOption Driver::flag(const std::string& name, bool& var, const std::string& help) {
+DriverOption<bool> Driver::flag(const std::string& name, bool& var, const std::string& help) {
   recorders_.emplace_back(name, [&var] { return to_text(var); });
-  return DriverOption(app_->add_flag("--" + name, var, help), [] { return std::vector<double>{}; });
+  return DriverOption<bool>(add_state(app_->add_flag("--" + name, var, help), help), var);
 }
 
-DriverOption Driver::location(const std::string& name, std::string& var, const std::string& help) {
-  return DriverOption(app_->add_option("--" + name, var, help), [] { return std::vector<double>{}; });
+DriverOption<std::string> Driver::location(const std::string& name, std::string& var, const std::string& help) {
+  return DriverOption<std::string>(add_state(app_->add_option("--" + name, var, help), help), var);
 }
 
 int Driver::run(int argc, char** argv, const std::function<void()>& body) {
@@ -133,6 +223,9 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
     return app_->exit(e);
   }
   try {
+    if (quick_)
+      for (const auto& s : options_)
+        if (s->apply_quick && s->o->count() == 0) s->apply_quick();  // not given: the quick value
     const auto start = std::chrono::steady_clock::now();
     const long long work0 = particle_steps_taken();
     prepare_output();

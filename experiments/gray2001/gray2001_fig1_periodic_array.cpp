@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
   sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp): mu = 0.22, cfl = 0.5
   std::vector<double> h_over_dp{1.0, 1.5};
   d.param("n", n, "particles per side of the periodic cell").positive();
-  d.param("steps", steps, "time steps (Gray 2001: 10 000)").positive();
+  d.param("steps", steps, "time steps (Gray 2001: 10 000)").positive().quick(2000);
   d.param("pressure", pressure, "initial pressure P / (rho0 c0^2), positive");
   d.param("mu", scheme.mu, "shear modulus").non_negative();
   d.param("cfl", scheme.cfl, "time-step factor").positive();
@@ -71,7 +71,6 @@ int main(int argc, char** argv) {
   d.param("sample-every", every, "steps between recorded order parameters").positive();
 
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("steps")) steps = 2000;
     if (n < 4 || steps < 1 || !(pressure > 0)) throw std::invalid_argument("need n >= 4, steps >= 1, pressure > 0");
     const double dp = 1.0 / n;
     auto series = d.csv("order.csv", {"h_over_dp", "step", "t", "shift_columns", "shift_rows", "shift", "disorder"});

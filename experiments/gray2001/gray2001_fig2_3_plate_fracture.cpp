@@ -23,18 +23,16 @@ int main(int argc, char** argv) {
   sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp) but mu:
   scheme.mu = 0.6;             // Figs 2-3
   long max_steps = -1;
-  d.param("dp", dp, "particle spacing").positive();
+  d.param("dp", dp, "particle spacing").positive().quick(0.25);
   d.param("clamp-length", clamp, "plate length held between the fixed layers").non_negative();
   d.param("cfl", scheme.cfl, "time-step factor").positive();
   d.param("mu", scheme.mu, "shear modulus (Gray 2001 Figs 2-3: 0.60)").non_negative();
   d.param("Vf", Vf, "tip speed / c0 (Figs 2-3: 0.05)");
-  d.param("periods", periods, "length of the eps = 0.3 run in theoretical periods").positive();
+  d.param("periods", periods, "length of the eps = 0.3 run in theoretical periods").positive().quick(1.0);
   d.param("snapshot-every", snapshot_every, "time between snapshots (HDF5; CSV frames during the first period)").positive();
   d.param("max-steps", max_steps, "stop each run after this many steps (smoke test); -1 = no limit");
 
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("dp")) dp = 0.25;
-    if (d.quick() && !d.given("periods")) periods = 1.0;
     const double mu = scheme.mu;
     const double T = scenes::plate_theory_period(mu, 2.0, 20.0);
     auto summary = d.csv("summary.csv", {"eps", "t_end", "steps", "wall_s", "fracture_time", "fracture_time_over_T", "crack_x", "fragments_at_end"});

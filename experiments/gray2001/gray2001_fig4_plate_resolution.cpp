@@ -25,9 +25,9 @@ int main(int argc, char** argv) {
   std::vector<double> alphas{0.5, 2.0};
   double clamp = 2.0, Vf = 0.01, periods = 1.0;
   sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp); Fig 4's mu = 0.22 is the default
-  d.param("n", ns, "particles across H = 2").positive();
+  d.param("n", ns, "particles across H = 2").positive().quick({4, 6, 8});
   d.param("alpha", scheme.alpha, "artificial viscosity alpha (= beta) of the resolution runs").non_negative();
-  d.param("alphas-coarse", alphas, "further alpha (= beta) values run at the coarsest n").non_negative();
+  d.param("alphas-coarse", alphas, "further alpha (= beta) values run at the coarsest n").non_negative().quick({2.0});
   d.param("clamp-length", clamp, "plate length held between the fixed layers").non_negative();
   d.param("cfl", scheme.cfl, "time-step factor").positive();
   d.param("mu", scheme.mu, "shear modulus (Fig 4: 0.22)").non_negative();
@@ -38,8 +38,6 @@ int main(int argc, char** argv) {
   const sph::RunJobs jobs(d);  // --step-runs, --list-runs
 
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("n")) ns = {4, 6, 8};
-    if (d.quick() && !d.given("alphas-coarse")) alphas = {2.0};
     if (ns.size() < 2) throw std::invalid_argument("need at least two resolutions");
     const double mu = scheme.mu, alpha = scheme.alpha;
     const double T_theory = scenes::plate_theory_period(mu, 2.0, 20.0);

@@ -16,19 +16,17 @@ int main(int argc, char** argv) {
   double dp = 0.1, clamp = 2.0, Vf = 0.05, periods = 3.0, snapshot_every = 200.0;
   sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp): Fig 5's mu = 0.22 and eps = 0.30
   long max_steps = -1;
-  d.param("dp", dp, "particle spacing").positive();
+  d.param("dp", dp, "particle spacing").positive().quick(0.25);
   d.param("clamp-length", clamp, "plate length held between the fixed layers").non_negative();
   d.param("cfl", scheme.cfl, "time-step factor").positive();
   d.param("mu", scheme.mu, "shear modulus (Fig 5: 0.22)").non_negative();
   d.param("Vf", Vf, "tip speed / c0 (Fig 5: 0.05)");
   d.param("eps", scheme.eps_artificial, "artificial stress epsilon (Fig 5: 0.30)").non_negative();
-  d.param("periods", periods, "run length in theoretical periods (CHOSEN: 3, 'several oscillations')").positive();
+  d.param("periods", periods, "run length in theoretical periods (CHOSEN: 3, 'several oscillations')").positive().quick(1.0);
   d.param("snapshot-every", snapshot_every, "time between HDF5 snapshots").positive();
   d.param("max-steps", max_steps, "stop after this many steps (smoke test); -1 = no limit");
 
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("dp")) dp = 0.25;
-    if (d.quick() && !d.given("periods")) periods = 1.0;
     const double mu = scheme.mu;
     const double T = scenes::plate_theory_period(mu, 2.0, 20.0);
     scenes::PlateRunSpec s;

@@ -38,20 +38,17 @@ int main(int argc, char** argv) {
   double dp = 0.1, speed = 0.059, gap = 0.2, t_max = 300, after_contact = 60, frame_every = 20;
   sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp): Sec 7.2's mu = 0.22
   bool coarse_check = true;
-  d.param("dp", dp, "particle spacing (Sec 7.2: 0.1)").positive();
+  d.param("dp", dp, "particle spacing (Sec 7.2: 0.1)").positive().quick(0.2);
   d.param("mu", scheme.mu, "shear modulus (Sec 7.2: 0.22)").non_negative();
   d.param("speed", speed, "speed of each ring toward the other (Sec 7.2: 0.059)").positive();
-  d.param("gap", gap, "distance between the rings' outer edges at t = 0").non_negative();
+  d.param("gap", gap, "distance between the rings' outer edges at t = 0").non_negative().quick(0.4);  // closest particles 2 dp + gap = 0.8 apart: outside 2h = 0.6
   d.param("cfl", scheme.cfl, "time-step factor").positive();
   d.param("t-max", t_max, "longest run").positive();
   d.param("after-contact", after_contact, "run time after the rings separate").non_negative();
   d.param("frame-every", frame_every, "time between configuration frames (CSV and HDF5)").positive();
-  d.param("coarse-check", coarse_check, "also run eps = 0.3 at 2 dp to measure the resolution change");
+  d.param("coarse-check", coarse_check, "also run eps = 0.3 at 2 dp to measure the resolution change").quick(false);
 
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("dp")) dp = 0.2;
-    if (d.quick() && !d.given("coarse-check")) coarse_check = false;
-    if (d.quick() && !d.given("gap")) gap = 0.4;  // closest particles 2 dp + gap = 0.8 apart: outside 2h = 0.6
     auto base = [&](double eps, double spacing) {
       scenes::RingsRunSpec s;
       s.rings.dp = spacing;

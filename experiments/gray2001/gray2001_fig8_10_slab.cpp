@@ -61,28 +61,25 @@ int main(int argc, char** argv) {
   const double neck_particles = 10;
   double frame_every_eps0 = 20, frame_every = 50, sample_dt = 2.0;
   std::vector<double> study_dps{0.064, 0.032}, runs{0.0, 0.3};
-  d.param("dp", dp, "particle spacing (Sec 7.3: 0.016)").positive();
+  d.param("dp", dp, "particle spacing (Sec 7.3: 0.016)").positive().quick(0.064);
   d.param("end-accel", end_accel, "outward acceleration of EACH end band (reading: 5e-6 is the relative one)").non_negative();
   d.param("band", band, "width of the driven end bands (Sec 7.3: 0.2)").non_negative();
   d.param("mu", scheme.mu, "shear modulus (Sec 7.3: 0.3)").non_negative();
   d.param("yield", scheme.yield_stress, "von Mises yield strength (Sec 7.3: 0.03)").positive();
   d.param("cfl", scheme.cfl, "time-step factor").positive();
   d.param("t-max-eps0", t_max_eps0, "longest eps = 0 run").positive();
-  d.param("t-max", t_max, "longest eps = 0.3 run").positive();
+  d.param("t-max", t_max, "longest eps = 0.3 run").positive().quick(420);  // past t = 394 of Fig 10; the fracture needs a full run
   d.param("frame-every-eps0", frame_every_eps0, "time between frames of the eps = 0 run").positive();
   d.param("frame-every", frame_every, "time between frames of the eps = 0.3 run").positive();
   d.param("sample-dt", sample_dt, "interval of the measurements (fracture, neck)").positive();
   d.param("runs", runs, "which of the runs eps = 0 and eps = 0.3 to do (e.g. --runs 0.3 for a fine eps = 0.3 run only)").non_negative();
-  d.param("study-dps", study_dps, "further spacings of the eps = 0.3 resolution study (0: none)").non_negative();
+  d.param("study-dps", study_dps, "further spacings of the eps = 0.3 resolution study (0: none)").non_negative().quick({});
   scenes::SlabSpec seeding;  // the perfect lattice by default; a jitter and seed draw one member of an ensemble
   const sph::RunJobs jobs(d, "its result (and a main run's snapshots and frames)");
   d.param("jitter", seeding.jitter, "random displacement of every particle, up to this x dp (0: the lattice; SlabSpec::jitter)").non_negative();
   d.param("seed", seeding.seed, "seed of the jitter");
 
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("dp")) dp = 0.064;
-    if (d.quick() && !d.given("study-dps")) study_dps.clear();
-    if (d.quick() && !d.given("t-max")) t_max = 420;  // past t = 394 of Fig 10; the fracture needs a full run
     auto spec = [&](double eps, double spacing) {
       scenes::SlabRunSpec s;
       s.slab.dp = spacing;

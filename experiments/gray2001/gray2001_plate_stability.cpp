@@ -36,18 +36,15 @@ int main(int argc, char** argv) {
   d.param("Vf", Vf, "tip speed / c0");
   d.param("cfl-values", cfls, "time-step factors of the sweep").positive();
   std::vector<double> paper_cfls{0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0};  // from the default up: the sweep at dp stops at 1.5
-  d.param("paper-sweep-dp", paper_dp, "spacing of the second sweep, the papers' (0: no second sweep)").non_negative();
+  d.param("paper-sweep-dp", paper_dp, "spacing of the second sweep, the papers' (0: no second sweep)").non_negative().quick(0);  // the papers' resolution is a full run's
   d.param("paper-cfl-values", paper_cfls, "time-step factors of the second sweep").positive();
-  d.param("sweep-time", sweep_time, "simulated time of each sweep run").positive();
-  d.param("long-periods", long_periods, "length of the long run in theoretical periods").positive();
+  d.param("sweep-time", sweep_time, "simulated time of each sweep run").positive().quick(60);
+  d.param("long-periods", long_periods, "length of the long run in theoretical periods").positive().quick(1.5);  // three crossings: first and last period
   d.param("perturbation", perturbation, "random initial displacement / dp of the perturbed run").non_negative();
   d.param("cfl", scheme.cfl, "time-step factor of the long and perturbed runs").positive();
   const sph::RunJobs jobs(d);  // --step-runs, --list-runs
 
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("long-periods")) long_periods = 1.5;  // three crossings: first and last period
-    if (d.quick() && !d.given("sweep-time")) sweep_time = 60;
-    if (d.quick() && !d.given("paper-sweep-dp")) paper_dp = 0;  // the papers' resolution is a full run's
     const double mu = scheme.mu;
     const double T = scenes::plate_theory_period(mu, 2.0, 20.0);
     auto base = [&] {

@@ -28,14 +28,13 @@ int main(int argc, char** argv) {
   double Vf = 0.01;
   sph::GrayParameters scheme;  // the scheme's defaults (parameters.hpp) but mu:
   scheme.mu = 0.6;             // CHOSEN: the Table 1 row mu = 0.6, V_f = 0.01
-  d.param("n", ns, "particles across H = 2 (at least four values)").positive();
+  d.param("n", ns, "particles across H = 2 (at least four values)").positive().quick({4, 6, 8, 10});
   d.param("threads", threads, "OpenMP thread counts").positive();
   d.param("mu", scheme.mu, "shear modulus").non_negative();
   d.param("Vf", Vf, "tip speed / c0");
   d.param("cfl", scheme.cfl, "time-step factor").positive();
   const sph::RunJobs jobs(d);  // --step-runs, --list-runs
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("n")) ns = {4, 6, 8, 10};
     if (ns.size() < 4) throw std::invalid_argument("a work-precision study needs at least four resolutions");
     const double mu = scheme.mu;
     const double T_th = scenes::plate_theory_period(mu, 2.0, 20.0);

@@ -38,10 +38,10 @@ int main(int argc, char** argv) {
   double cfl = sph::GrayParameters{}.cfl;  // the scheme's default (parameters.hpp), used by the scene drivers
   d.param("rings-dp", rings_dp, "particle spacing of the rings sweep").positive();
   d.param("slab-dp", slab_dp, "particle spacing of the slab sweep").positive();
-  d.param("rings-time", rings_time, "simulated time of each rings sweep run").positive();
-  d.param("slab-time", slab_time, "simulated time of each slab sweep run").positive();
+  d.param("rings-time", rings_time, "simulated time of each rings sweep run").positive().quick(40);
+  d.param("slab-time", slab_time, "simulated time of each slab sweep run").positive().quick(60);
   d.param("cfl-values", cfls, "time-step factors of the sweep").positive();
-  d.param("fast-dp", fast_dp, "particle spacing of the fast collision").positive();
+  d.param("fast-dp", fast_dp, "particle spacing of the fast collision").positive().quick(0.2);
   d.param("fast-speed", fast_speed, "speed of each ring in the fast collision (paper: 0.059)").positive();
   d.param("cfl", cfl, "the factor of the scene drivers: the margins and the halved-step runs refer to it").positive();
   int slab_seeds = 8;
@@ -51,9 +51,6 @@ int main(int argc, char** argv) {
   const sph::RunJobs jobs(d);  // --step-runs, --list-runs
 
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("fast-dp")) fast_dp = 0.2;
-    if (d.quick() && !d.given("slab-time")) slab_time = 60;
-    if (d.quick() && !d.given("rings-time")) rings_time = 40;
     // Every scene's size before the first run: a spacing typed wrong stops here, not after the other scenes.
     for (const double dp : {rings_dp, fast_dp}) { scenes::RingsSpec r; r.dp = dp; scenes::check_size(r); }
     { scenes::SlabSpec s; s.dp = slab_dp; scenes::check_size(s); }

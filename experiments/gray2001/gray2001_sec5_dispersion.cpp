@@ -45,11 +45,10 @@ int main(int argc, char** argv) {
   d.param("n", n, "artificial-stress exponent n of f^n (eq 3.12)").non_negative();
   d.param("h-min", h_min, "smallest h/dp of the sweep").positive();
   d.param("h-max", h_max, "largest h/dp of the sweep").positive();
-  d.param("h-step", h_step, "h/dp step of the sweep (CHOSEN: fine enough to locate sign changes to 1e-3)").positive();
+  d.param("h-step", h_step, "h/dp step of the sweep (CHOSEN: fine enough to locate sign changes to 1e-3)").positive().quick(0.05);
   d.param("n-max", n_max, "largest n of the f_xx(n) table").positive();
 
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("h-step")) h_step = 0.05;
     if (!(h_step > 0) || !(h_max > h_min) || h_min <= 0.5) throw std::invalid_argument("need 0.5 < h-min < h-max, h-step > 0");
     if (n < 0 || n_max < 3) throw std::invalid_argument("need n >= 0 and n-max >= 3");
     const sph::CubicSpline W(2);

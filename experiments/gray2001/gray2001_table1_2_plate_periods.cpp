@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
   int crossings = 1;
   bool same_n = true, coarse_reference = true;
   d.param("crossings", crossings, "stop each run at this zero crossing of the tip (2: one period; 1: half, T = 2 t_1)").positive();
-  d.param("dp", dp, "particle spacing (H/dp must be an integer)").positive();
+  d.param("dp", dp, "particle spacing (H/dp must be an integer)").positive().quick(0.25);
   d.param("clamp-length", clamp, "plate length held between the fixed layers").non_negative();
   d.param("cfl", scheme.cfl, "time-step factor: dt = cfl h / (c_L + V_f)").positive();
   d.param("alpha", scheme.alpha, "artificial viscosity alpha").non_negative();
@@ -88,7 +88,6 @@ int main(int argc, char** argv) {
 
   return d.run(argc, argv, [&] {
     d.retarget(table == 2 ? "G-tab2" : "G-tab1");
-    if (d.quick() && !d.given("dp")) dp = 0.25;
     // The rows this run does; --quick: one row per table (mu = 0.6, Vf = 0.01, the shortest periods) at a coarser
     // spacing. A row's runs: its own ("row") and, in Table 2, the same-n reading (issue 14 item 1: as many particles
     // across H = 1 as Table 1 has across H = 2, dp H / 2, its theory column unchanged).

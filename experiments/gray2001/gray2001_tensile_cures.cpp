@@ -53,17 +53,13 @@ int main(int argc, char** argv) {
   sph::Driver d("gray2001_tensile_cures", "X", "Cures for the tensile instability on the plate, rings and slab");
   double plate_dp = 0.25, rings_dp = 0.2, slab_dp = 0.064, slab_t_max = 800;
   double cfl = sph::GrayParameters{}.cfl;  // the scheme's default
-  d.param("plate-dp", plate_dp, "plate particle spacing (Figs 2-3 at 0.2 in G-fig2)").positive();
-  d.param("rings-dp", rings_dp, "rings particle spacing (paper 0.1)").positive();
-  d.param("slab-dp", slab_dp, "slab particle spacing (paper 0.016)").positive();
-  d.param("slab-t-max", slab_t_max, "longest slab run").positive();
+  d.param("plate-dp", plate_dp, "plate particle spacing (Figs 2-3 at 0.2 in G-fig2)").positive().quick(0.5);
+  d.param("rings-dp", rings_dp, "rings particle spacing (paper 0.1)").positive().quick(0.25);
+  d.param("slab-dp", slab_dp, "slab particle spacing (paper 0.016)").positive().quick(0.1);
+  d.param("slab-t-max", slab_t_max, "longest slab run").positive().quick(300);
   d.param("cfl", cfl, "time-step factor of every run").positive();
 
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("plate-dp")) plate_dp = 0.5;
-    if (d.quick() && !d.given("rings-dp")) rings_dp = 0.25;
-    if (d.quick() && !d.given("slab-dp")) slab_dp = 0.1;
-    if (d.quick() && !d.given("slab-t-max")) slab_t_max = 300;
     // Every scene's size before the first run: a spacing typed wrong stops here, not after the other scenes.
     { scenes::RingsSpec r; r.dp = rings_dp; scenes::check_size(r); }
     { scenes::PlateSpec p; p.H = 2.0; p.dp = plate_dp; p.clamp_length = 2.0; scenes::check_size(p); }

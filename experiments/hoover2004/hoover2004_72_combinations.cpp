@@ -25,12 +25,12 @@ int main(int argc, char** argv) {
   Driver d("hoover2004_72_combinations", "H-72", "all 72 SPAM combinations of Sec. IX ranked");
   scenes::HexagonSetup s;
   s.dt = 0.1;
-  scenes::hexagon_params(d, s);
+  auto hex = scenes::hexagon_params(d, s);
+  hex.shells.quick(3);
+  hex.dt.quick(0.2);
+  hex.revolutions.quick(0.25);
   const sph::RunJobs jobs(d);  // --step-runs, --list-runs
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("shells")) s.shells = 3;
-    if (d.quick() && !d.given("dt")) s.dt = 0.2;
-    if (d.quick() && !d.given("revolutions")) s.revolutions = 0.25;
     const double pi = std::acos(-1.0);
     s.snapshot_angles = {2 * pi};
     std::vector<scenes::HexagonVariant> v;

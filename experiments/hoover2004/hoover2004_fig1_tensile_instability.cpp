@@ -21,14 +21,11 @@ int main(int argc, char** argv) {
   Driver d("hoover2004_fig1_tensile_instability", "H-fig1", "kinetic energy growth of a kicked lattice under tension");
   int n = 24;
   double dt = 0.1, t_end = 240, kick = 1e-10;
-  d.param("n", n, "particles per row and rows (periodic n x n crystal)").positive();
-  d.param("dt", dt, "RK4 time step").positive();
-  d.param("t-end", t_end, "duration").positive();
+  d.param("n", n, "particles per row and rows (periodic n x n crystal)").positive().quick(12);
+  d.param("dt", dt, "RK4 time step").positive().quick(0.2);
+  d.param("t-end", t_end, "duration").positive().quick(120);
   d.param("kick", kick, "initial speed of the kicked particle").non_negative();
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("n")) n = 12;
-    if (d.quick() && !d.given("dt")) dt = 0.2;
-    if (d.quick() && !d.given("t-end")) t_end = 120;
     const double Lx = n, Ly = n * std::sqrt(3.0) / 2;
     const auto x0 = rectangle(LatticeKind::Triangular, 0, 0, Lx, Ly, 1.0);
     SpamParams p;

@@ -20,13 +20,11 @@ using namespace sph;
 int main(int argc, char** argv) {
   Driver d("hoover2004_fig2_sheared_square", "H-fig2", "sheared square released: L = 0 throughout");
   double side = 16, shear = 0.25, dt = 0.05, t_end = 150;
-  d.param("side", side, "square side in lattice spacings").positive();
+  d.param("side", side, "square side in lattice spacings").positive().quick(8);
   d.param("shear", shear, "simple shear u_x = shear * y");
   d.param("dt", dt, "RK4 time step").positive();
-  d.param("t-end", t_end, "duration").positive();
+  d.param("t-end", t_end, "duration").positive().quick(40);
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("side")) side = 8;
-    if (d.quick() && !d.given("t-end")) t_end = 40;
     // Lattice points with |x|, |y| <= side/2 of the triangular lattice through the origin.
     std::vector<Vec2> x0;
     const double rs = std::sqrt(3.0) / 2;

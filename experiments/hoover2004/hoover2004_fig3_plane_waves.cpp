@@ -128,14 +128,12 @@ int main(int argc, char** argv) {
   int n = 24;
   double A = 0.25, dt = 0.05, periods = 2;
   std::string density = "sum";
-  d.param("n", n, "particles per row and rows (n x n crystal)").positive();
+  d.param("n", n, "particles per row and rows (n x n crystal)").positive().quick(12);
   d.param("amplitude", A, "maximum displacement");
-  d.param("dt", dt, "RK4 time step").positive();
+  d.param("dt", dt, "RK4 time step").positive().quick(0.2);
   d.param("periods", periods, "wave periods to follow").positive();
   d.param("density", density, "sum or cont").positive();
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("dt")) dt = 0.2;  // --quick: a coarser step and a 12 x 12 crystal
-    if (d.quick() && !d.given("n")) n = 12;
     auto out = d.csv("energies.csv", {"wave", "t", "amplitude", "K", "U"});
     const double Ly = n * std::sqrt(3.0) / 2;
     for (std::string kind : {"transverse", "longitudinal"}) {

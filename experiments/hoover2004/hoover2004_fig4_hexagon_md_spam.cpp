@@ -52,10 +52,10 @@ void write_disk_closed_forms(Driver& d) {
 int main(int argc, char** argv) {
   Driver d("hoover2004_fig4_hexagon_md_spam", "H-fig4", "rotating hexagon: MD and standard SPAM, L(t), snapshots");
   scenes::HexagonSetup s;
-  scenes::hexagon_params(d, s);
+  auto hex = scenes::hexagon_params(d, s);
+  hex.revolutions.quick(1.0 / 3.0);  // up to 120 degrees: the L rows
+  hex.dt.quick(0.1);
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("revolutions")) s.revolutions = 1.0 / 3.0;  // up to 120 degrees: the L rows
-    if (d.quick() && !d.given("dt")) s.dt = 0.1;
     const double pi = std::acos(-1.0);
     write_disk_closed_forms(d);
     s.snapshot_angles = {2 * pi / 3, 2 * pi};

@@ -13,9 +13,8 @@ using namespace sph;
 int main(int argc, char** argv) {
   Driver d("hoover2004_fig5_velocity_averaging", "H-fig5", "rotating hexagon with velocity averaging: snapshots");
   scenes::HexagonSetup s;
-  scenes::hexagon_params(d, s);
+  scenes::quick_hexagon(scenes::hexagon_params(d, s));
   return d.run(argc, argv, [&] {
-    scenes::quick_hexagon(d, s);
     const double pi = std::acos(-1.0);
     s.snapshot_angles = {2 * pi / 3, 2 * pi};
     scenes::run_and_record(d, s, scenes::variants({"cont/shepard", "cont/monaghan_arith", "cont/shepard/chain",

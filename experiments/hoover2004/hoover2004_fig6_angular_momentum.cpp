@@ -11,9 +11,8 @@ using namespace sph;
 int main(int argc, char** argv) {
   Driver d("hoover2004_fig6_angular_momentum", "H-fig6", "rotating hexagon: L(t) with velocity averaging");
   scenes::HexagonSetup s;
-  scenes::hexagon_params(d, s);
+  scenes::quick_hexagon(scenes::hexagon_params(d, s));
   return d.run(argc, argv, [&] {
-    scenes::quick_hexagon(d, s);
     const double pi = std::acos(-1.0);
     s.snapshot_angles = {2 * pi};
     scenes::run_and_record(d, s, scenes::variants({"cont/shepard", "cont/monaghan_arith", "cont/v"}));

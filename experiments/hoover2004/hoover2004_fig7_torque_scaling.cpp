@@ -14,9 +14,8 @@ using namespace sph;
 int main(int argc, char** argv) {
   Driver d("hoover2004_fig7_torque_scaling", "H-fig7", "rotating hexagon with torque scaling");
   scenes::HexagonSetup s;
-  scenes::hexagon_params(d, s);
+  scenes::quick_hexagon(scenes::hexagon_params(d, s));
   return d.run(argc, argv, [&] {
-    scenes::quick_hexagon(d, s);
     const double pi = std::acos(-1.0);
     s.snapshot_angles = {2 * pi};
     s.track_advection_torque = true;

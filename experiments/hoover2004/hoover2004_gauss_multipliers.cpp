@@ -15,9 +15,8 @@ using namespace sph;
 int main(int argc, char** argv) {
   Driver d("hoover2004_gauss_multipliers", "H-gauss", "Gauss's principle: where the multipliers' denominator vanishes");
   scenes::HexagonSetup s;
-  scenes::hexagon_params(d, s);
+  scenes::quick_hexagon(scenes::hexagon_params(d, s));
   return d.run(argc, argv, [&] {
-    scenes::quick_hexagon(d, s);
     const double pi = std::acos(-1.0);
     s.snapshot_angles = {2 * pi};
     const auto runs = scenes::run_and_record(d, s, scenes::variants({"cont/v/gauss", "cont/monaghan_arith/gauss", "cont/v", "md"}));

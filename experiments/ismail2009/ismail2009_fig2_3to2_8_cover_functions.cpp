@@ -109,18 +109,13 @@ int main(int argc, char** argv) {
                 "normalisation in 1D/2D/3D, printed constants G, share of the support with W'' > 0");
   int samples = 2001, panels = 64, gl_order = 16, scan = 4000;
   double h = 0.7;
-  d.param("samples", samples, "points per curve across [-support, support] (plots only)").positive();
+  d.param("samples", samples, "points per curve across [-support, support] (plots only)").positive().quick(201);
   d.param("h", h, "smoothing length of the normalisation integrals (CHOSEN non-unit to test the 1/h^d scaling)").positive();
-  d.param("panels", panels, "panels per smooth piece of the independent Gauss-Legendre quadrature").positive();
+  d.param("panels", panels, "panels per smooth piece of the independent Gauss-Legendre quadrature").positive().quick(32);  // still converged to 1e-13: the claims stay checkable
   d.param("gl-order", gl_order, "Gauss-Legendre points per panel").positive();
-  d.param("scan", scan, "scan steps over the support before bisecting each sign change of W''").positive();
+  d.param("scan", scan, "scan steps over the support before bisecting each sign change of W''").positive().quick(400);
 
   return d.run(argc, argv, [&] {
-    if (d.quick()) {
-      if (!d.given("samples")) samples = 201;
-      if (!d.given("panels")) panels = 32;  // still converged to 1e-13: the claims stay checkable
-      if (!d.given("scan")) scan = 400;
-    }
     if (samples < 3 || panels < 1 || gl_order < 2 || scan < 10 || !(h > 0))
       throw std::invalid_argument("need samples >= 3, panels >= 1, gl-order >= 2, scan >= 10, h > 0");
     const GaussLegendre gl(gl_order);

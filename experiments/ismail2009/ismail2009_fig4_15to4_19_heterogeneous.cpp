@@ -26,13 +26,12 @@ int main(int argc, char** argv) {
   d.param("rho", rho, "density of the left half, kg/m^3").positive();
   d.param("E", E, "Young's modulus, Pa");
   d.param("nu", nu, "Poisson's ratio").above(-1).below(0.5);
-  d.param("ps", ps, "particle spacing, m (CHOSEN as I-bar)").positive();
+  d.param("ps", ps, "particle spacing, m (CHOSEN as I-bar)").positive().quick(0.3e-3);
   d.param("h-over-ps", h_over_ps, "cover radius in spacings").positive();
   d.param("pulse", pulse, "pulse duration, s (CHOSEN)").positive();
   d.param("smoothing", smooth, "pulse smoothing, s (CHOSEN: intermediate)").non_negative();
   d.param("factors", factors, "rho_B / rho_A for Figs 4.16-4.19 (CHOSEN)").positive();
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("ps")) ps = 0.3e-3;
     if (factors.size() != 4) throw std::invalid_argument("--factors needs four values (Figs 4.16-4.19)");
     const double C = sph::p_wave_modulus(sph::lame_from_young_poisson(E, nu)), cA = std::sqrt(C / rho), h = h_over_ps * ps;
     const scenes::SmoothedPulse p(p0, pulse, smooth);

@@ -54,18 +54,16 @@ int main(int argc, char** argv) {
   d.param("nu", nu, "Poisson's ratio (needed for c_L = 5801, Section 4.6.3.1)").above(-1).below(0.5);
   d.param("length", L, "bar length, m").positive();
   d.param("p0", p0, "pulse pressure, Pa (T11 = -p0)");
-  d.param("ps", ps, "particle spacing, m (CHOSEN: gives h/c_b = 165 ns)").positive();
+  d.param("ps", ps, "particle spacing, m (CHOSEN: gives h/c_b = 165 ns)").positive().quick(0.6e-3);
   d.param("h-over-ps", h_over_ps, "cover radius in spacings (CHOSEN 5.5, Section 2.7.3)").positive();
   d.param("pulse", pulse, "pulse duration, s (CHOSEN)").positive();
   d.param("smooth-large", smooth_large, "large pulse smoothing, s (CHOSEN)").non_negative();
   d.param("smooth-intermediate", smooth_mid, "intermediate pulse smoothing, s (CHOSEN)").non_negative();
   d.param("dt-factor", dt_factor, "dt / (h/c) for the validation runs (CHOSEN)").positive();
   d.param("t-end", t_end, "simulated time, s (CHOSEN)").positive();
-  d.param("sweep-steps", sweep_steps, "steps per stability trial (CHOSEN)").positive();
+  d.param("sweep-steps", sweep_steps, "steps per stability trial (CHOSEN)").positive().quick(1500);
   d.param("modulus", modulus, "p_wave (lambda + 2 mu, 1D strain) or young (E, as Algorithm 4.1)").positive();
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("ps")) ps = 0.6e-3;
-    if (d.quick() && !d.given("sweep-steps")) sweep_steps = 1500;
     if (modulus != "p_wave" && modulus != "young") throw std::invalid_argument("--modulus must be p_wave or young");
     const std::vector<double> gauges{0.0, L / 3, 2 * L / 3, L};
     const double h = h_over_ps * ps;

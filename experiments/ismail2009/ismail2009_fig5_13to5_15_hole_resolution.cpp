@@ -79,14 +79,14 @@ int main(int argc, char** argv) {
   p.variational = false;
   p.settle = 10;  // the slowest mode's decay of 6/omega at 4 omega, at the damping of 6.5 (see the header)
   p.hourglass = 0.005;
-  d.param("n", ns, "particles along a side of the controlled runs, one run each").positive();
-  d.param("plain-n", plain_ns, "particles along a side of the runs without the control").positive();
-  d.param("gammas", gammas, "control strengths of the gamma sweep").non_negative();
-  d.param("gamma-n", gamma_n, "particles along a side of the gamma sweep").positive();
-  d.param("linear-n", linear_n, "particles along a side of the linear (Hooke) run; 0 = none").non_negative();
-  d.param("edge-n", edge_ns, "particles along a side of the edge-stability runs at the default step; 0 = none").non_negative();
+  d.param("n", ns, "particles along a side of the controlled runs, one run each").positive().quick({11, 21});
+  d.param("plain-n", plain_ns, "particles along a side of the runs without the control").positive().quick({11, 21});
+  d.param("gammas", gammas, "control strengths of the gamma sweep").non_negative().quick({0, 0.005, 0.02});
+  d.param("gamma-n", gamma_n, "particles along a side of the gamma sweep").positive().quick(21);
+  d.param("linear-n", linear_n, "particles along a side of the linear (Hooke) run; 0 = none").non_negative().quick(21);
+  d.param("edge-n", edge_ns, "particles along a side of the edge-stability runs at the default step; 0 = none").non_negative().quick({21});
   d.param("edge-eigen-n", eigen_n, "particles along a side of the spectrum of the linearised operator (dense: ~6 s at 21, ~4 min at 41); 0 = none").non_negative();
-  d.param("edge-variants-n", edge_n, "particles along a side of the edge-stability variants (step, passes, nu, closure)").positive();
+  d.param("edge-variants-n", edge_n, "particles along a side of the edge-stability variants (step, passes, nu, closure)").positive().quick(21);
   d.param("fem-m", fem_m, "finite element meshes of the linear reference: 2m x m elements (m along the radius)").positive();
   d.param("hourglass", p.hourglass, "zero-energy-mode control gamma of the study (TlConfig2D::hourglass; CHOSEN)").non_negative();
   d.param("settle", p.settle, "settling time after the ramp in 1/omega (CHOSEN)").non_negative();
@@ -94,15 +94,6 @@ int main(int argc, char** argv) {
   d.param("variational", p.variational, "boundary scheme: variational (true) or ghost reflection (false)");
   const sph::RunJobs jobs(d);  // --step-runs, --list-runs
   return d.run(argc, argv, [&] {
-    if (d.quick()) {
-      if (!d.given("n")) ns = {11, 21};
-      if (!d.given("plain-n")) plain_ns = {11, 21};
-      if (!d.given("gammas")) gammas = {0, 0.005, 0.02};
-      if (!d.given("gamma-n")) gamma_n = 21;
-      if (!d.given("linear-n")) linear_n = 21;
-      if (!d.given("edge-n")) edge_ns = {21};
-      if (!d.given("edge-variants-n")) edge_n = 21;
-    }
     const scenes::HoleStudySpec spec{ns, plain_ns, gammas, gamma_n, linear_n, edge_ns, edge_n, eigen_n, p};
     // The study's runs, named (the unit of a job: Makefile run_rules). Every run is stepped here (or read from its
     // run job's folder, --runs-from) before the outputs, which are then written in the study's order.

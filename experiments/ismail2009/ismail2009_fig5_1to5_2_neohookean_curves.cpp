@@ -110,11 +110,10 @@ int main(int argc, char** argv) {
   d.param("l2", l2s, "fixed transverse stretches, one curve each");
   d.param("l1-min", l1_min, "smallest stretch l1").positive();
   d.param("l1-max", l1_max, "largest stretch l1").positive();
-  d.param("n", n, "grid points in l1").positive();
+  d.param("n", n, "grid points in l1").positive().quick(551);
   d.param("path-l2-end", path_l2_end, "l2 at l1 = l1-max on the linear path of Fig 5.12").positive();
   d.param("fd-step", fd_step, "central-difference step in l1 for dT11/dl1 at l1 = 1").positive();
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("n")) n = 551;
     if (!(l1_min > 0 && l1_min < 1 && l1_max > 1)) throw std::invalid_argument("need 0 < l1-min < 1 < l1-max");
     if (n < 11) throw std::invalid_argument("n must be >= 11");
     for (double l2 : l2s) if (!(l2 > 0)) throw std::invalid_argument("l2 must be > 0");

@@ -55,12 +55,11 @@ int main(int argc, char** argv) {
   d.param("length", L, "bar length for the stretch test, m (Section 5.3.2: 15 mm)").positive();
   d.param("stretch", stretch, "final stretch (90 mm / 15 mm)").positive();
   d.param("transits", transits, "loading time in small-strain transit times L/c_L (Section 5.3.2: 30)").positive();
-  d.param("particles", particles, "particles on the stretched bar (CHOSEN)").positive();
+  d.param("particles", particles, "particles on the stretched bar (CHOSEN)").positive().quick(61);
   d.param("h-over-ps", h_over_ps, "cover radius in spacings").positive();
   d.param("dt-factor", dt_factor, "dt / (h/c_L) (CHOSEN)").positive();
   d.param("loss-tolerance", tol, "loss of stability: max |F_p+1 - F_p| / l above this (CHOSEN)").non_negative();
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("particles")) particles = 61;
 
     // ---- Fig 5.4: the small-strain wave ---------------------------------------------------------------------
     {

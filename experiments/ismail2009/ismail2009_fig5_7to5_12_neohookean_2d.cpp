@@ -41,14 +41,13 @@ int main(int argc, char** argv) {
   d.param("rho", rho, "density, kg/m^3").positive();
   d.param("E", E, "Young's modulus, Pa");
   d.param("nu", nu, "Poisson's ratio").above(-1).below(0.5);
-  d.param("ps-wave", ps_wave, "spacing of the wave bar, m (CHOSEN)").positive();
+  d.param("ps-wave", ps_wave, "spacing of the wave bar, m (CHOSEN)").positive().quick(1.5e-3);
   d.param("rows", rows, "particles across the thickness (Section 5.4.2: six)");
   d.param("ps-block", ps_block, "spacing of the 31 x 6 block, m (CHOSEN)").positive();
   d.param("block-nx", block_nx, "particles along the block (Section 5.4.3: 31)").positive();
   d.param("h-over-ps", h_over_ps, "cover radius in spacings (CHOSEN)").positive();
   d.param("transits", transits, "loading time in transit times (CHOSEN as Section 5.3.2)").positive();
   return d.run(argc, argv, [&] {
-    if (d.quick() && !d.given("ps-wave")) ps_wave = 1.5e-3;
     const sph::Lame m = sph::lame_from_young_poisson(E, nu);
     const double cL = sph::longitudinal_wave_speed(m, rho);
 

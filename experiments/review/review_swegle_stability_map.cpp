@@ -53,8 +53,8 @@ int main(int argc, char** argv) {
   int samples = 2001, scan = 4000, chain = 64;
   double delta = 1e-6, sigma = 1.0;
   std::vector<double> gray_h{1.0, 1.5}, ismail_h{1.5, 5.5};
-  d.param("samples", samples, "points of each map over the support (plot)").positive();
-  d.param("scan", scan, "scan steps before bisecting the inflection of W''").positive();
+  d.param("samples", samples, "points of each map over the support (plot)").positive().quick(201);
+  d.param("scan", scan, "scan steps before bisecting the inflection of W''").positive().quick(400);
   d.param("delta", delta, "finite-difference displacement (units of dp) of the linearisation").positive();
   d.param("sigma", sigma, "magnitude of the uniform stress (units of rho c^2; only the sign matters)");
   d.param("chain", chain, "particles of the periodic chain for the alternating-mode check (even)").positive();
@@ -62,10 +62,6 @@ int main(int argc, char** argv) {
   d.param("ismail-h-over-dp", ismail_h, "h/dp marked for the support-1 functions (Ismail 2009: 1.5 and 5.5)").expected(1, 20).positive();
 
   return d.run(argc, argv, [&] {
-    if (d.quick()) {
-      if (!d.given("samples")) samples = 201;
-      if (!d.given("scan")) scan = 400;
-    }
     if (samples < 3 || scan < 10 || !(delta > 0 && delta < 1e-2) || !(sigma > 0) || chain < 8 || chain % 2)
       throw std::invalid_argument("need samples >= 3, scan >= 10, 0 < delta < 1e-2, sigma > 0, even chain >= 8");
     for (double x : gray_h) if (!(x > 0)) throw std::invalid_argument("h/dp must be positive");

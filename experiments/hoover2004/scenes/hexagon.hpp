@@ -12,6 +12,7 @@
 
 #include "io/csv.hpp"
 #include "core/lattices.hpp"
+#include "frame/driver.hpp"
 #include "spam/options.hpp"
 
 namespace sph::scenes {
@@ -73,16 +74,17 @@ SpamOptions spam_options_from_label(const std::string& label);
 
 }  // namespace sph::scenes
 
-namespace sph {
-class Driver;
-}
-
 namespace sph::scenes {
 
+/// The hexagon options of a driver, for the quick values of each driver (e.g. `o.dt.quick(0.1)`).
+struct HexagonOptions {
+  DriverOption<int> shells;
+  DriverOption<double> dt, vmax, revolutions;
+};
 /// Registers the hexagon options on a driver (--shells, --dt, --vmax, --revolutions).
-void hexagon_params(Driver& d, HexagonSetup& s);
+HexagonOptions hexagon_params(Driver& d, HexagonSetup& s);
 /// --quick for the hexagon figures: 61 particles (4 shells) and dt = 0.2, unless given on the command line.
-void quick_hexagon(const Driver& d, HexagonSetup& s);
+void quick_hexagon(HexagonOptions o);
 /// The SPAM variants of these labels (spam_options_from_label); "md" is the molecular dynamics reference.
 std::vector<HexagonVariant> variants(const std::vector<std::string>& labels);
 /// The run of a variant: molecular dynamics for "md", else SPAM with its options.

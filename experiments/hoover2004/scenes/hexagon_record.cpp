@@ -38,16 +38,16 @@ void write_snapshots(CsvWriter& out, const HexagonRun& r) {
               r.snapshots[s][i].y(), r.snapshot_density[s][i]);
 }
 
-void hexagon_params(Driver& d, HexagonSetup& s) {
-  d.param("shells", s.shells, "hexagon shells n (N = 1 + 3n + 3n^2)").positive();
-  d.param("dt", s.dt, "RK4 time step").positive();
-  d.param("vmax", s.vmax, "rotation speed at the vertices").positive();
-  d.param("revolutions", s.revolutions, "nominal revolutions to follow").positive();
+HexagonOptions hexagon_params(Driver& d, HexagonSetup& s) {
+  return {d.param("shells", s.shells, "hexagon shells n (N = 1 + 3n + 3n^2)").positive(),
+          d.param("dt", s.dt, "RK4 time step").positive(),
+          d.param("vmax", s.vmax, "rotation speed at the vertices").positive(),
+          d.param("revolutions", s.revolutions, "nominal revolutions to follow").positive()};
 }
 
-void quick_hexagon(const Driver& d, HexagonSetup& s) {
-  if (d.quick() && !d.given("dt")) s.dt = 0.2;
-  if (d.quick() && !d.given("shells")) s.shells = 4;  // 61 particles
+void quick_hexagon(HexagonOptions o) {
+  o.dt.quick(0.2);
+  o.shells.quick(4);  // 61 particles
 }
 
 std::vector<HexagonVariant> variants(const std::vector<std::string>& labels) {
