@@ -52,6 +52,8 @@ def table_html(rows):
         colour = STATUS_COLOUR.get(r.status, "black")
         label = r.status + (f" ({KIND_LABEL[r.kind]})" if r.get("kind", "") in KIND_LABEL else "")
         status = f'<b style="color:{colour}">{html.escape(label)}</b>'
+        if r.get("evidence", ""):  # the numbers a DISCREPANCY or peer verdict rests on (reference/check.py)
+            status += f'<br><small>{html.escape(r.evidence)}</small>'
         cells = [html.escape(str(c)) for c in (r.quantity, r.published, r.reproduced, r.tolerance)]
         cells += [status, html.escape(r.source), html.escape(r.note)]
         body.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")

@@ -78,7 +78,11 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "experiments"))
 import targets as declaration  # noqa: E402  (experiments/targets.py: the reader of experiments/targets.mk)
 
-OUT_COLUMNS = ["target", "quantity", "published", "reproduced", "tolerance", "status", "kind", "source", "note"]
+# note: the row's text (why_tolerance, a discrepancy's explanation, or why it failed); evidence: the numbers a
+# DISCREPANCY or peer verdict rests on, computed by this check (the own value's band, the reading's alternative
+# value, the code version of a peer comparison), kept apart so that the note stays the reference's own words.
+OUT_COLUMNS = ["target", "quantity", "published", "reproduced", "tolerance", "status", "kind", "source", "note",
+               "evidence"]
 KINDS = {"reading": "paper", "erratum": "paper", "open": "open"}  # kind -> whose discrepancy it is
 COMPARES = ("abs", "rel", "le", "ge", "abs_le")
 REF_COLUMNS = ["target", "quantity", "published", "unit", "compare", "tolerance", "why_tolerance", "source",
@@ -313,7 +317,8 @@ def check_peer_row(row, peer_values, why_not, checkout=None):
     ok = within(compare, reproduced, published, tol)
     note = row["why_tolerance"] if ok else f"out of tolerance: our implementation and the peer's differ; {row['why_tolerance']}"
     other = f"; the checkout is {checkout}: make peers --force reruns them" if checkout and version != checkout else ""
-    return {**out, "status": "PASS" if ok else "FAIL", "note": f"{note} [ours at {version}{other}]"}
+    return {**out, "status": "PASS" if ok else "FAIL", "note": note,
+            "evidence": f"ours at {version}{other}"}
 
 
 def load_values(results_dir):
@@ -489,8 +494,8 @@ def check_row(row, values, sources, allowed, quick_mode, mixed, unreadable=None,
             return {**out, "status": "FAIL", "kind": kind,
                     "note": f"discrepancy reading '{alt}' = {alt_value:.6g} does not reproduce the published value either"}
         return {**out, "status": "DISCREPANCY", "kind": kind,
-                "note": f"{row['explanation']} [{alt} = {alt_value:.6g}; own value in {band}]"}
-    return {**out, "status": "DISCREPANCY", "kind": kind, "note": f"{row['explanation']} [own value in {band}]"}
+                "note": row["explanation"], "evidence": f"{alt} = {alt_value:.6g}; own value in {band}"}
+    return {**out, "status": "DISCREPANCY", "kind": kind, "note": row["explanation"], "evidence": f"own value in {band}"}
 
 
 def discrepancy_kinds(table):
@@ -533,11 +538,11 @@ def main():
     out_path = os.path.join(args.results, "check.csv")
     os.makedirs(args.results, exist_ok=True)
     with open(out_path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=OUT_COLUMNS)
+        w = csv.DictWriter(f, fieldnames=OUT_COLUMNS, restval="")
         w.writeheader()
         w.writerows(rows)
 
-    table = pd.DataFrame(rows, columns=OUT_COLUMNS)
+    table = pd.DataFrame(rows, columns=OUT_COLUMNS).fillna("")
     with pd.option_context("display.max_rows", None, "display.max_colwidth", 60, "display.width", 250):
         print(table[["target", "quantity", "published", "reproduced", "tolerance", "status"]].to_string(index=False))
     referenced = {(r["target"], r["quantity"]) for r in rows} | {

@@ -178,6 +178,8 @@ class DiscrepancyContract(unittest.TestCase):
     def test_open_row_in_its_band_is_a_discrepancy_of_its_kind(self):
         out = check_one(discrepancy_row(), {("T", "q"): 12.0})
         self.assertEqual((out["status"], out["kind"]), ("DISCREPANCY", "open"))
+        # the note is the reference's explanation alone; the numbers the verdict rests on are the evidence
+        self.assertEqual((out["note"], out["evidence"]), ("e", "own value in [11, 13]"))
 
     def test_own_value_outside_the_band_fails_whatever_the_kind(self):
         for kw in ({}, {"kind": "reading", "alt_quantity": "q_alt"}, {"own_band": "", "analysis_value": "12"}):
@@ -207,7 +209,9 @@ class DiscrepancyContract(unittest.TestCase):
 
     def test_a_reading_must_reproduce_the_published_number(self):
         row = discrepancy_row(kind="reading", alt_quantity="q_alt")
-        self.assertEqual(check_one(row, {("T", "q"): 12.0, ("T", "q_alt"): 10.05})["status"], "DISCREPANCY")
+        out = check_one(row, {("T", "q"): 12.0, ("T", "q_alt"): 10.05})
+        self.assertEqual((out["status"], out["note"]), ("DISCREPANCY", "e"))
+        self.assertEqual(out["evidence"], "q_alt = 10.05; own value in [11, 13]")
         out = check_one(row, {("T", "q"): 12.0, ("T", "q_alt"): 11.0})
         self.assertEqual(out["status"], "FAIL")
         self.assertIn("does not reproduce", out["note"])
@@ -302,7 +306,7 @@ class PeerRows(unittest.TestCase):
         write_peer_values(self.dir, [(self.q, 0.0)], version="def456")
         out = self.check()[1]
         self.assertEqual(out["status"], "PASS")
-        self.assertIn("ours at def456", out["note"])
+        self.assertIn("ours at def456", out["evidence"])
         with open(os.path.join(self.dir, "peers", "values_peers.csv"), "w") as f:
             f.write("quantity,value\n" + self.q + ",0\n")  # an older file without the version column
         out = self.check()[1]
