@@ -8,6 +8,8 @@ from its own --help:
   out of range         its first option bounded below (':> x' or ':>= x' in --help) set to x - 1
   unknown name         its first option with a list of allowed names (':{...}') set to 'nosuchname'
   unwritable output    --out below a regular file (root may write anywhere else)
+  run too long         a time step of 1e-30 (--cfl) in a driver that steps a run to a fixed end: refused by the
+                       run-length guard (frame/progress.hpp) after its first 2 s, naming the estimate and the flag
   too many particles   its particle spacing (--dp, --ps, --slab-dp, --rings-dp, --plate-dp) set to 2^-30
                        (~1e-9, dividing every length), or its particles along a side (--n) to 1e8-1e9:
                        refused before anything is allocated
@@ -70,6 +72,16 @@ def options(binary):
             for l in out.splitlines() for m in [OPTION.match(l)] if m], out
 
 
+# Drivers whose first run steps to a fixed end time with the time-step factor --cfl (each scene kind once: plate,
+# rings, slab, the total-Lagrangian plate of the cures table): the run-length guard must refuse --cfl 1e-30.
+STEPS_TO_AN_END = ("gray2001_table1_2_plate_periods", "gray2001_fig6_7_rings", "gray2001_fig8_10_slab",
+                   "gray2001_tensile_cures")
+
+
+def name_of(binary):
+    return os.path.basename(binary)
+
+
 def cases(binary, tmp):
     """(class, args, what the message must name) for every class of bad input the driver has."""
     opts, helptext = options(binary)
@@ -89,6 +101,8 @@ def cases(binary, tmp):
     open(blocker, "w").close()
     out.append(("unwritable output", ["--out", os.path.join(blocker, "out")], ["--out", "cannot write"]))
     names = {o[0]: o for o in opts}
+    if name_of(binary) in STEPS_TO_AN_END:
+        out.append(("run too long", ["--quick", "--cfl", "1e-30"], ["would take", "years", "--max-run-hours 0"]))
     spacing = next((s for s in SPACINGS if s in names), None)
     n_is_count = any(l.strip().startswith("--n INT") and "particles" in l for l in helptext.splitlines())
     if spacing:

@@ -1,6 +1,7 @@
 #include "frame/driver.hpp"
 
 #include "core/run_loop.hpp"
+#include "frame/progress.hpp"
 
 #include <CLI/CLI.hpp>
 #include <omp.h>
@@ -217,11 +218,18 @@ DriverOption<std::string> Driver::location(const std::string& name, std::string&
 }
 
 int Driver::run(int argc, char** argv, const std::function<void()>& body) {
+  // Last in --help, and not recorded in the headers: it bounds how long a run may take, not what it computes.
+  double max_run_hours = 24.0;
+  app_->add_option("--max-run-hours", max_run_hours,
+                   "refuse a run whose time to go, estimated after its first seconds, exceeds this (0: no limit)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   try {
     app_->parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app_->exit(e);
   }
+  Progress::run_limit_s() = max_run_hours * 3600.0;
   try {
     if (quick_)
       for (const auto& s : options_)
@@ -234,6 +242,12 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
       write_timing(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                    particle_steps_taken() - work0);
     return 0;
+  } catch (const RunTooLong& e) {
+    std::string given;
+    for (const auto& [k, f] : recorders_)
+      if (this->given(k)) given += " --" + k + " " + f();
+    std::cerr << name_ << ": refused: " << e.what() << (given.empty() ? "" : "; parameters given:" + given) << "\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << name_ << ": error: " << e.what() << "\n";
     return 1;
