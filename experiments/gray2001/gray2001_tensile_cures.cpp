@@ -47,24 +47,167 @@ sph::GrayOptions with_cures(sph::GrayOptions o, const Variant& v) {
   return o;
 }
 
+const double mu_plate = 0.6;  // the plate's shear modulus (Figs 2-3)
+
+// The command line's parameters (declare() below: names, defaults, --quick values).
+struct Params {
+  double plate_dp = 0.25, rings_dp = 0.2, slab_dp = 0.064, slab_t_max = 800;
+  double cfl = sph::GrayParameters{}.cfl;  // the scheme's default
+};
+
+void declare(sph::Driver& d, Params& p) {
+  d.param("plate-dp", p.plate_dp, "plate particle spacing (Figs 2-3 at 0.2 in G-fig2)").positive().quick(0.5);
+  d.param("rings-dp", p.rings_dp, "rings particle spacing (paper 0.1)").positive().quick(0.25);
+  d.param("slab-dp", p.slab_dp, "slab particle spacing (paper 0.016)").positive().quick(0.1);
+  d.param("slab-t-max", p.slab_t_max, "longest slab run").positive().quick(300);
+  d.param("cfl", p.cfl, "time-step factor of every run").positive();
+}
+
+// Every scene's size before the first run: a spacing typed wrong stops here, not after the other scenes.
+void check_sizes(const Params& p) {
+  { scenes::RingsSpec r; r.dp = p.rings_dp; scenes::check_size(r); }
+  { scenes::PlateSpec pl; pl.H = 2.0; pl.dp = p.plate_dp; pl.clamp_length = 2.0; scenes::check_size(pl); }
+  { scenes::SlabSpec s; s.dp = p.slab_dp; scenes::check_size(s); }
+}
+
+// Plate, half a period.
+scenes::PlateRunResult cures_plate(const Params& p, const Variant& v, double T_theory) {
+  scenes::PlateRunSpec ps;
+  ps.plate.H = 2.0;
+  ps.plate.dp = p.plate_dp;
+  ps.plate.clamp_length = 2.0;
+  ps.plate.Vf = 0.05;
+  ps.scheme.mu = mu_plate;
+  ps.scheme.cfl = p.cfl;
+  ps.options = with_cures(ps.options, v);
+  ps.t_end = 1.5 * T_theory;
+  ps.stop_after_crossings = 1;
+  ps.fracture_check_dt = 5.0;
+  ps.run_after_fracture = 20.0;
+  return scenes::run_plate(ps, {}, std::string("cures plate ") + v.name);
+}
+
+scenes::RingsRunResult cures_rings(const Params& p, const Variant& v) {
+  scenes::RingsRunSpec rs;
+  rs.rings.dp = p.rings_dp;
+  rs.rings.gap = std::max(0.2, 2.0 * p.rings_dp);  // closest particles gap + 2 dp apart: outside 2h = 3 dp
+  rs.scheme.cfl = p.cfl;
+  rs.options = with_cures(rs.options, v);
+  rs.t_max = 300;
+  rs.run_after_contact = 20;
+  return scenes::run_rings(rs, {}, std::string("cures rings ") + v.name);
+}
+
+scenes::SlabRunResult cures_slab(const Params& p, const Variant& v) {
+  scenes::SlabRunSpec ss;
+  ss.slab.dp = p.slab_dp;
+  ss.scheme.cfl = p.cfl;
+  ss.options = with_cures(ss.options, v);
+  ss.t_max = p.slab_t_max;
+  return scenes::run_slab(ss, {}, std::string("cures slab ") + v.name);
+}
+
+// What the later columns need of a variant: its plate's period error, the time its slab's ends parted.
+struct Outcome { double plate_error, slab_fracture; };
+
+// A variant on the three scenes: its row of cures.csv and its values.
+Outcome write_variant(sph::Driver& d, sph::CsvWriter& table, const Params& p, const Variant& v, double T_theory) {
+  const std::string name = v.name;
+  const auto pr = cures_plate(p, v, T_theory);
+  const bool plate_broken = pr.fracture_time >= 0 || !pr.blow_up.empty();
+  const double T = plate_broken ? NAN : scenes::period_from_crossings(scenes::zero_crossings(pr.trace));
+  const auto rr = cures_rings(p, v);
+  const auto sr = cures_slab(p, v);
+  table.row(name, v.artificial_stress ? 1 : 0, v.xsph ? 1 : 0, T, T / T_theory - 1, plate_broken ? 1 : 0, pr.fracture_time,
+            pr.wall_s, rr.max_fragments, rr.min_main_share, rr.restitution, rr.wall_s, sr.clumping_time, sr.fracture_time,
+            sr.wall_s);
+  d.value(name + "_plate_broken", plate_broken ? 1.0 : 0.0, "the plate broke (or blew up) within half a period");
+  d.value(name + "_plate_period_error", T / T_theory - 1, "T_sph / T_thin-plate - 1 (nan: broken)");
+  d.value(name + "_rings_fragments", static_cast<double>(rr.max_fragments), "most fragments of a ring");
+  d.value(name + "_rings_restitution", rr.restitution, "relative speed after / before (-1: not separated)");
+  d.value(name + "_slab_fracture_time", sr.fracture_time, "the ends parted (-1: not by slab-t-max)");
+  d.value(name + "_slab_clumping_time", sr.clumping_time, "free particles closer than 0.75 dp (-1: never)");
+  // Not parted by slab-t-max counts as slab-t-max: a lower bound of the delay below.
+  return {T / T_theory - 1, sr.fracture_time >= 0 ? sr.fracture_time : p.slab_t_max};
+}
+
+// The total-Lagrangian column (issue 14 item 9): the plate only, on the lattice of the same spacing
+// (gray2001/scenes/plate_tl.hpp). Its kernel lives in the reference configuration, so it has no contact
+// (rings) and no fracture (slab): those columns are NaN, not applicable. CHOSEN: the variational closure.
+// The ghost-reflection closure of every other total-Lagrangian scene blows up on this plate within a
+// tenth of a period (measured 2026-12-02: t = 147 at V_f = 0.05, 166 at 0.01, at h/ps = 2-3.5, a third of
+// the step and Hooke's law alike; the edge instability of issue 15 b, here at nu = 0.25): run too, for
+// its blow-up time. The variational plate itself gains energy after ~1.5 periods (x2.7 by 1.75 periods at
+// V_f = 0.01): within the half period measured here its energy change is written.
+void write_total_lagrangian(sph::Driver& d, sph::CsvWriter& table, const Params& p, double T_theory, double both_plate_error) {
+  scenes::TlPlateSpec ts;
+  ts.ps = p.plate_dp;
+  ts.Vf = 0.05;
+  ts.mu = mu_plate;
+  ts.t_end = 1.5 * T_theory;
+  ts.stop_after_crossings = 1;
+  ts.variational = true;
+  const auto tr = scenes::run_tl_plate(ts, "cures plate total_lagrangian");
+  const bool broken = !tr.blow_up.empty();
+  if (broken) std::cerr << "cures plate total_lagrangian: " << tr.blow_up << "\n";
+  const double T = broken ? NAN : scenes::period_from_crossings(scenes::zero_crossings(tr.trace));
+  table.row("total_lagrangian", 0, 0, T, T / T_theory - 1, broken ? 1 : 0, NAN, tr.wall_s, NAN, NAN, NAN, NAN, NAN, NAN, NAN);
+  d.value("total_lagrangian_plate_period_error", T / T_theory - 1,
+          "T_TL / T_thin-plate - 1 (Ismail's total-Lagrangian SPH, variational closure, neo-Hookean, H / ps + 1 across; nan: blew up)");
+  d.value("total_lagrangian_plate_blew_up", broken ? 1.0 : 0.0, "the total-Lagrangian plate's state became non-finite");
+  d.value("total_lagrangian_over_both_plate_error", std::abs(T / T_theory - 1) / std::abs(both_plate_error),
+          "|period error| of the total-Lagrangian plate over that of Gray's new algorithm (both cures), same spacing");
+  const auto energy = [](const scenes::TipSample& x) { return x.ke + x.ee; };
+  d.value("total_lagrangian_plate_energy_change", energy(tr.trace.back()) / energy(tr.trace[1]) - 1.0,
+          "(kinetic + elastic) at the half period over its value after the first step, - 1 (no dissipation in the scheme)");
+  ts.variational = false;
+  const auto rr = scenes::run_tl_plate(ts, "cures plate total_lagrangian reflection");
+  d.value("total_lagrangian_reflection_plate_blow_up_time", rr.blow_up.empty() ? -1.0 : rr.trace.back().t,
+          "the ghost-reflection closure's plate: the last time it was finite (-1: no blow-up within the half period)");
+  d.value("total_lagrangian_reflection_plate_blow_up_over_period", rr.blow_up.empty() ? -1.0 : rr.trace.back().t / T_theory,
+          "the same over the thin-plate period");
+}
+
+// The rotating hexagon, every formulation's cures on one scene.
+void write_hexagon(sph::Driver& d, double cfl) {
+  auto hex = d.csv("hexagon.csv", {"formulation", "variant", "L_loss_120deg", "broke", "steps", "wall_s"});
+  sph::scenes::HexagonSetup hs;
+  for (const Variant& v : kVariants) {
+    scenes::GrayHexagonSpec gs;
+    gs.hexagon = hs;
+    gs.cfl = cfl;
+    gs.options = with_cures(gs.options, v);
+    const auto r = scenes::run_gray_hexagon(gs, std::string("cures hexagon ") + v.name);
+    const bool broke = r.max_fragments > 1 || !r.blow_up.empty();
+    hex.row("gray", v.name, r.L_loss, broke ? 1 : 0, r.steps, r.wall_s);
+    d.value(std::string("hexagon_L_loss_120deg_gray_") + v.name, r.L_loss, "1 - L/L0 at 120 degrees, Gray's scheme");
+    d.value(std::string("hexagon_broke_gray_") + v.name, broke ? 1.0 : 0.0, "more than one piece (or blew up) by 120 degrees");
+  }
+  hs.revolutions = 1.0 / 3.0;  // to 120 degrees
+  const double pi = std::acos(-1.0);
+  auto spam_row = [&](const std::string& formulation, const std::string& variant, const sph::scenes::HexagonRun& r) {
+    const double loss = 1.0 - r.L_ratio_at_angle(2 * pi / 3, hs.omega());
+    hex.row(formulation, variant, loss, r.failed ? 1 : 0, r.steps, r.wall_s);
+    d.value("hexagon_L_loss_120deg_" + formulation + "_" + variant, loss, "1 - L/L0 at 120 degrees");
+  };
+  spam_row("md", "md", sph::scenes::run_hexagon_md(hs));
+  for (const char* label : {"cont/v", "cont/shepard", "cont/monaghan_arith", "cont/v/pair_torque"}) {
+    const sph::SpamOptions o = sph::scenes::spam_options_from_label(label);
+    std::string name = o.label();
+    std::replace(name.begin(), name.end(), '/', '_');
+    spam_row("spam", name, sph::scenes::run_hexagon_spam(hs, o, name));
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   sph::Driver d("gray2001_tensile_cures", "X", "Cures for the tensile instability on the plate, rings and slab");
-  double plate_dp = 0.25, rings_dp = 0.2, slab_dp = 0.064, slab_t_max = 800;
-  double cfl = sph::GrayParameters{}.cfl;  // the scheme's default
-  d.param("plate-dp", plate_dp, "plate particle spacing (Figs 2-3 at 0.2 in G-fig2)").positive().quick(0.5);
-  d.param("rings-dp", rings_dp, "rings particle spacing (paper 0.1)").positive().quick(0.25);
-  d.param("slab-dp", slab_dp, "slab particle spacing (paper 0.016)").positive().quick(0.1);
-  d.param("slab-t-max", slab_t_max, "longest slab run").positive().quick(300);
-  d.param("cfl", cfl, "time-step factor of every run").positive();
+  Params p;
+  declare(d, p);
 
   return d.run(argc, argv, [&] {
-    // Every scene's size before the first run: a spacing typed wrong stops here, not after the other scenes.
-    { scenes::RingsSpec r; r.dp = rings_dp; scenes::check_size(r); }
-    { scenes::PlateSpec p; p.H = 2.0; p.dp = plate_dp; p.clamp_length = 2.0; scenes::check_size(p); }
-    { scenes::SlabSpec s; s.dp = slab_dp; scenes::check_size(s); }
-    const double mu_plate = 0.6;
+    check_sizes(p);
     const double T_theory = scenes::plate_theory_period(mu_plate, 2.0, 20.0);
     auto table = d.csv("cures.csv", {"variant", "artificial_stress", "xsph", "plate_period", "plate_period_error", "plate_broken",
                                      "plate_fracture_time", "plate_wall_s", "rings_fragments", "rings_min_main_share",
@@ -73,120 +216,17 @@ int main(int argc, char** argv) {
     double slab_fracture_xsph = NAN, slab_fracture_both = NAN;
     double both_plate_error = NAN;  // Gray's new algorithm, for the total-Lagrangian column
     for (const Variant& v : kVariants) {
+      const Outcome o = write_variant(d, table, p, v, T_theory);
       const std::string name = v.name;
-      // Plate, half a period.
-      scenes::PlateRunSpec ps;
-      ps.plate.H = 2.0;
-      ps.plate.dp = plate_dp;
-      ps.plate.clamp_length = 2.0;
-      ps.plate.Vf = 0.05;
-      ps.scheme.mu = mu_plate;
-      ps.scheme.cfl = cfl;
-      ps.options = with_cures(ps.options, v);
-      ps.t_end = 1.5 * T_theory;
-      ps.stop_after_crossings = 1;
-      ps.fracture_check_dt = 5.0;
-      ps.run_after_fracture = 20.0;
-      const auto pr = scenes::run_plate(ps, {}, "cures plate " + name);
-      const bool plate_broken = pr.fracture_time >= 0 || !pr.blow_up.empty();
-      const double T = plate_broken ? NAN : scenes::period_from_crossings(scenes::zero_crossings(pr.trace));
-      // Rings.
-      scenes::RingsRunSpec rs;
-      rs.rings.dp = rings_dp;
-      rs.rings.gap = std::max(0.2, 2.0 * rings_dp);  // closest particles gap + 2 dp apart: outside 2h = 3 dp
-      rs.scheme.cfl = cfl;
-      rs.options = with_cures(rs.options, v);
-      rs.t_max = 300;
-      rs.run_after_contact = 20;
-      const auto rr = scenes::run_rings(rs, {}, "cures rings " + name);
-      // Slab.
-      scenes::SlabRunSpec ss;
-      ss.slab.dp = slab_dp;
-      ss.scheme.cfl = cfl;
-      ss.options = with_cures(ss.options, v);
-      ss.t_max = slab_t_max;
-      const auto sr = scenes::run_slab(ss, {}, "cures slab " + name);
-      table.row(name, v.artificial_stress ? 1 : 0, v.xsph ? 1 : 0, T, T / T_theory - 1, plate_broken ? 1 : 0, pr.fracture_time,
-                pr.wall_s, rr.max_fragments, rr.min_main_share, rr.restitution, rr.wall_s, sr.clumping_time, sr.fracture_time,
-                sr.wall_s);
-      d.value(name + "_plate_broken", plate_broken ? 1.0 : 0.0, "the plate broke (or blew up) within half a period");
-      d.value(name + "_plate_period_error", T / T_theory - 1, "T_sph / T_thin-plate - 1 (nan: broken)");
-      if (name == "both") both_plate_error = T / T_theory - 1;
-      d.value(name + "_rings_fragments", static_cast<double>(rr.max_fragments), "most fragments of a ring");
-      d.value(name + "_rings_restitution", rr.restitution, "relative speed after / before (-1: not separated)");
-      d.value(name + "_slab_fracture_time", sr.fracture_time, "the ends parted (-1: not by slab-t-max)");
-      d.value(name + "_slab_clumping_time", sr.clumping_time, "free particles closer than 0.75 dp (-1: never)");
-      // Not parted by slab-t-max counts as slab-t-max: a lower bound of the delay below.
-      const double tf = sr.fracture_time >= 0 ? sr.fracture_time : slab_t_max;
-      if (name == "xsph") slab_fracture_xsph = tf;
-      if (name == "both") slab_fracture_both = tf;
+      if (name == "xsph") slab_fracture_xsph = o.slab_fracture;
+      if (name == "both") {
+        both_plate_error = o.plate_error;
+        slab_fracture_both = o.slab_fracture;
+      }
     }
-    // The total-Lagrangian column (issue 14 item 9): the plate only, on the lattice of the same spacing
-    // (gray2001/scenes/plate_tl.hpp). Its kernel lives in the reference configuration, so it has no contact
-    // (rings) and no fracture (slab): those columns are NaN, not applicable. CHOSEN: the variational closure.
-    // The ghost-reflection closure of every other total-Lagrangian scene blows up on this plate within a
-    // tenth of a period (measured 2026-12-02: t = 147 at V_f = 0.05, 166 at 0.01, at h/ps = 2-3.5, a third of
-    // the step and Hooke's law alike; the edge instability of issue 15 b, here at nu = 0.25): run too, for
-    // its blow-up time. The variational plate itself gains energy after ~1.5 periods (x2.7 by 1.75 periods at
-    // V_f = 0.01): within the half period measured here its energy change is written.
-    {
-      scenes::TlPlateSpec ts;
-      ts.ps = plate_dp;
-      ts.Vf = 0.05;
-      ts.mu = mu_plate;
-      ts.t_end = 1.5 * T_theory;
-      ts.stop_after_crossings = 1;
-      ts.variational = true;
-      const auto tr = scenes::run_tl_plate(ts, "cures plate total_lagrangian");
-      const bool broken = !tr.blow_up.empty();
-      if (broken) std::cerr << "cures plate total_lagrangian: " << tr.blow_up << "\n";
-      const double T = broken ? NAN : scenes::period_from_crossings(scenes::zero_crossings(tr.trace));
-      table.row("total_lagrangian", 0, 0, T, T / T_theory - 1, broken ? 1 : 0, NAN, tr.wall_s, NAN, NAN, NAN, NAN, NAN, NAN, NAN);
-      d.value("total_lagrangian_plate_period_error", T / T_theory - 1,
-              "T_TL / T_thin-plate - 1 (Ismail's total-Lagrangian SPH, variational closure, neo-Hookean, H / ps + 1 across; nan: blew up)");
-      d.value("total_lagrangian_plate_blew_up", broken ? 1.0 : 0.0, "the total-Lagrangian plate's state became non-finite");
-      d.value("total_lagrangian_over_both_plate_error", std::abs(T / T_theory - 1) / std::abs(both_plate_error),
-              "|period error| of the total-Lagrangian plate over that of Gray's new algorithm (both cures), same spacing");
-      const auto energy = [](const scenes::TipSample& x) { return x.ke + x.ee; };
-      d.value("total_lagrangian_plate_energy_change", energy(tr.trace.back()) / energy(tr.trace[1]) - 1.0,
-              "(kinetic + elastic) at the half period over its value after the first step, - 1 (no dissipation in the scheme)");
-      ts.variational = false;
-      const auto rr = scenes::run_tl_plate(ts, "cures plate total_lagrangian reflection");
-      d.value("total_lagrangian_reflection_plate_blow_up_time", rr.blow_up.empty() ? -1.0 : rr.trace.back().t,
-              "the ghost-reflection closure's plate: the last time it was finite (-1: no blow-up within the half period)");
-      d.value("total_lagrangian_reflection_plate_blow_up_over_period", rr.blow_up.empty() ? -1.0 : rr.trace.back().t / T_theory,
-              "the same over the thin-plate period");
-    }
+    write_total_lagrangian(d, table, p, T_theory, both_plate_error);
     d.value("slab_fracture_delay_both_over_xsph", slab_fracture_both / slab_fracture_xsph,
             "time the ends part with both cures / with XSPH only (the paper's new / standard algorithm)");
-
-    // The rotating hexagon, every formulation's cures on one scene.
-    auto hex = d.csv("hexagon.csv", {"formulation", "variant", "L_loss_120deg", "broke", "steps", "wall_s"});
-    sph::scenes::HexagonSetup hs;
-    for (const Variant& v : kVariants) {
-      scenes::GrayHexagonSpec gs;
-      gs.hexagon = hs;
-      gs.cfl = cfl;
-      gs.options = with_cures(gs.options, v);
-      const auto r = scenes::run_gray_hexagon(gs, std::string("cures hexagon ") + v.name);
-      const bool broke = r.max_fragments > 1 || !r.blow_up.empty();
-      hex.row("gray", v.name, r.L_loss, broke ? 1 : 0, r.steps, r.wall_s);
-      d.value(std::string("hexagon_L_loss_120deg_gray_") + v.name, r.L_loss, "1 - L/L0 at 120 degrees, Gray's scheme");
-      d.value(std::string("hexagon_broke_gray_") + v.name, broke ? 1.0 : 0.0, "more than one piece (or blew up) by 120 degrees");
-    }
-    hs.revolutions = 1.0 / 3.0;  // to 120 degrees
-    const double pi = std::acos(-1.0);
-    auto spam_row = [&](const std::string& formulation, const std::string& variant, const sph::scenes::HexagonRun& r) {
-      const double loss = 1.0 - r.L_ratio_at_angle(2 * pi / 3, hs.omega());
-      hex.row(formulation, variant, loss, r.failed ? 1 : 0, r.steps, r.wall_s);
-      d.value("hexagon_L_loss_120deg_" + formulation + "_" + variant, loss, "1 - L/L0 at 120 degrees");
-    };
-    spam_row("md", "md", sph::scenes::run_hexagon_md(hs));
-    for (const char* label : {"cont/v", "cont/shepard", "cont/monaghan_arith", "cont/v/pair_torque"}) {
-      const sph::SpamOptions o = sph::scenes::spam_options_from_label(label);
-      std::string name = o.label();
-      std::replace(name.begin(), name.end(), '/', '_');
-      spam_row("spam", name, sph::scenes::run_hexagon_spam(hs, o, name));
-    }
+    write_hexagon(d, p.cfl);
   });
 }
