@@ -95,16 +95,7 @@ scenes::SlabRunResult result_of(const MeasuredFrames& m, const scenes::SlabRunSp
   scenes::SlabRunResult r;
   for (const auto& x : m.samples) r.trace.push_back(x.sample);
   const scenes::SlabSummary sum = scenes::summarise_slab(m.samples, s, dp);
-  r.first_split_time = sum.first_split_time;
-  r.fracture_time = sum.fracture_time;
-  r.crack_x = sum.crack_x;
-  r.crack_from_junction = sum.crack_from_junction;
-  r.neck_before_fracture = sum.neck_before_fracture;
-  r.onset_strain = sum.onset_strain;
-  r.onset_time = sum.onset_time;
-  r.clumping_time = sum.clumping_time;
-  r.opening_time = sum.opening_time;
-  r.opening_from_junction = sum.opening_from_junction;
+  scenes::set_summary(r, sum);
   r.particles = particles;
   r.dt = dt;
   return r;

@@ -98,16 +98,7 @@ SlabRunResult run_slab(const SlabRunSpec& s, const SlabObserver& on_sample, cons
   r.steps = solver.steps();
   r.wall_s = progress.elapsed_s();
   const SlabSummary sum = summarise_slab(samples, s, body.dp);
-  r.first_split_time = sum.first_split_time;
-  r.fracture_time = sum.fracture_time;
-  r.crack_x = sum.crack_x;
-  r.crack_from_junction = sum.crack_from_junction;
-  r.neck_before_fracture = sum.neck_before_fracture;
-  r.onset_strain = sum.onset_strain;
-  r.onset_time = sum.onset_time;
-  r.clumping_time = sum.clumping_time;
-  r.opening_time = sum.opening_time;
-  r.opening_from_junction = sum.opening_from_junction;
+  set_summary(r, sum);
   return r;
 }
 

@@ -149,6 +149,8 @@ struct SlabSummary {
   double clumping_time = -1, opening_time = -1, opening_from_junction = NAN;
 };
 SlabSummary summarise_slab(const std::vector<SlabMeasurement>& samples, const SlabRunSpec& settings, double dp);
+/// Copies a summary into a run's result (its fields of the same names).
+void set_summary(SlabRunResult& r, const SlabSummary& sum);
 
 /// Whether run_slab stops at a sample at time t, the ends having first parted at fracture_time (-1: not yet):
 /// run_after_fracture after the parting (never if run_after_fracture < 0). A peer's frames are read up to it.

@@ -268,4 +268,17 @@ std::vector<SlabValue> slab_run_values(const SlabRunResult& r, bool artificial_s
            "|crack x - slab centre| / length at fracture"}};
 }
 
+void set_summary(SlabRunResult& r, const SlabSummary& sum) {
+  r.first_split_time = sum.first_split_time;
+  r.fracture_time = sum.fracture_time;
+  r.crack_x = sum.crack_x;
+  r.crack_from_junction = sum.crack_from_junction;
+  r.neck_before_fracture = sum.neck_before_fracture;
+  r.onset_strain = sum.onset_strain;
+  r.onset_time = sum.onset_time;
+  r.clumping_time = sum.clumping_time;
+  r.opening_time = sum.opening_time;
+  r.opening_from_junction = sum.opening_from_junction;
+}
+
 }  // namespace scenes
