@@ -22,16 +22,10 @@ namespace {
 
 struct WaveResult { double period = 0, energy_drift = 0, period_elastic = 0, period_sph = 0; };
 
-WaveResult run_wave(Driver& d, CsvWriter& out, const std::string& kind, int n, double A, double dt, double periods,
-                    const std::string& density) {
-  const double pi = std::acos(-1.0);
-  const double Lx = n, Ly = n * std::sqrt(3.0) / 2, k = 2 * pi / Ly;
-  const auto x0 = rectangle(LatticeKind::Triangular, 0, 0, Lx, Ly, 1.0);
-  SpamParams p;
-  p.box = Box2{0, 0, Lx, Ly, true, true};
-  const bool transverse = kind == "transverse";
-  const double modulus = transverse ? p.eta : p.lambda + 2 * p.eta;
-  const double c = std::sqrt(modulus / std::sqrt(4.0 / 3.0));
+// The lattice x0 displaced by the wave A sin(ky) (along x: transverse, along y: longitudinal), at rest, with the
+// matching stress, the summed densities and the linear-elastic strain energy as internal energy.
+SpamState initial_wave(const std::vector<Vec2>& x0, const SpamParams& p, double k, double A, bool transverse,
+                       double modulus) {
   SpamState y(x0.size());
   for (std::size_t i = 0; i < x0.size(); ++i) {
     const double s = std::sin(k * x0[i].y()), strain = k * A * std::cos(k * x0[i].y());
@@ -44,16 +38,55 @@ WaveResult run_wave(Driver& d, CsvWriter& out, const std::string& kind, int n, d
     }
   }
   const auto rho = summed_density(y.x, p);
-  double U0 = 0;
   for (std::size_t i = 0; i < x0.size(); ++i) {
     const double strain = k * A * std::cos(k * x0[i].y());
     y.rho[i] = rho[i];
     y.e[i] = 0.5 * modulus * strain * strain / rho[i];
-    U0 += y.e[i];
   }
+  return y;
+}
+
+// The period from the zero crossings at T/4, 3T/4, ... of the first `periods` periods: the least-squares slope
+// of t_j against j is T/2.
+double crossing_period(const std::vector<double>& crossings, double periods, const std::string& kind) {
+  const std::size_t m = std::min<std::size_t>(crossings.size(), static_cast<std::size_t>(2 * periods));
+  if (m < 2) throw std::runtime_error(kind + " wave: fewer than two zero crossings; run longer");
+  double sj = 0, st = 0, sjj = 0, sjt = 0;
+  for (std::size_t j = 0; j < m; ++j) { sj += j; st += crossings[j]; sjj += double(j) * j; sjt += j * crossings[j]; }
+  return 2 * (m * sjt - sj * st) / (m * sjj - sj * sj);
+}
+
+// Linearised SPAM on the perfect lattice (Sec. IX equations): with S(k) = sum_j sin(k y_ij) y_ij F_ij,
+// dv/dt = (m S / rho^2) sigma and dsigma/dt = -M (m S / rho) v for either wave (M = eta or lambda + 2 eta),
+// so omega^2 = M m^2 S^2 / rho^3 against M k^2 / rho0 for the continuum: T_sph = T_elastic * k/|S| * sqrt(rho^3/rho0)/m.
+double sph_lattice_period(const std::vector<Vec2>& x0, const SpamParams& p, double Lx, double Ly, double k,
+                          double T_elastic) {
+  const Lucy w(2);
+  double S = 0;
+  for (const Vec2& xj : x0) {
+    Vec2 dd = x0[0] - xj;
+    dd.x() -= Lx * std::nearbyint(dd.x() / Lx);
+    dd.y() -= Ly * std::nearbyint(dd.y() / Ly);
+    const double r = dd.norm();
+    if (r > 0 && r < p.h) S += std::sin(k * dd.y()) * dd.y() * w.F(r, p.h);
+  }
+  const double rho_s = summed_density(x0, p)[0], rho0 = std::sqrt(4.0 / 3.0);
+  return T_elastic * k / std::abs(S) * std::sqrt(rho_s * rho_s * rho_s / rho0) / p.mass;
+}
+
+WaveResult run_wave(Driver& d, CsvWriter& out, const std::string& kind, int n, double A, double dt, double periods,
+                    const std::string& density) {
+  const double pi = std::acos(-1.0);
+  const double Lx = n, Ly = n * std::sqrt(3.0) / 2, k = 2 * pi / Ly;
+  const auto x0 = rectangle(LatticeKind::Triangular, 0, 0, Lx, Ly, 1.0);
+  SpamParams p;
+  p.box = Box2{0, 0, Lx, Ly, true, true};
+  const bool transverse = kind == "transverse";
+  const double modulus = transverse ? p.eta : p.lambda + 2 * p.eta;
+  const double c = std::sqrt(modulus / std::sqrt(4.0 / 3.0));
   SpamOptions o;
   o.density = spam_density_from_string(density);
-  auto sim = make_spam(o, p, y);
+  auto sim = make_spam(o, p, initial_wave(x0, p, k, A, transverse, modulus));
   const double T_elastic = Ly / c;
   WaveResult r;
   const long steps = std::lround(periods * T_elastic * 1.15 / dt);
@@ -91,33 +124,11 @@ WaveResult run_wave(Driver& d, CsvWriter& out, const std::string& kind, int n, d
   const auto outcome = run(*sim, {dt, steps}, observe);
   if (outcome.blew_up()) throw std::runtime_error(kind + " wave: " + outcome.blow_up);
   r.energy_drift = drift;
-  // crossings at T/4, 3T/4, ...: least-squares slope of t_j against j is T/2.
-  const std::size_t m = std::min<std::size_t>(crossings.size(), static_cast<std::size_t>(2 * periods));
-  if (m < 2) throw std::runtime_error(kind + " wave: fewer than two zero crossings; run longer");
-  double sj = 0, st = 0, sjj = 0, sjt = 0;
-  for (std::size_t j = 0; j < m; ++j) { sj += j; st += crossings[j]; sjj += double(j) * j; sjt += j * crossings[j]; }
-  r.period = 2 * (m * sjt - sj * st) / (m * sjj - sj * sj);
+  r.period = crossing_period(crossings, periods, kind);
   d.value("period_elastic_" + kind, T_elastic, "wavelength / sound speed of linear elasticity");
-  // Linearised SPAM on the perfect lattice (Sec. IX equations): with S(k) = sum_j sin(k y_ij) y_ij F_ij,
-  // dv/dt = (m S / rho^2) sigma and dsigma/dt = -M (m S / rho) v for either wave (M = eta or lambda + 2 eta),
-  // so omega^2 = M m^2 S^2 / rho^3 against M k^2 / rho0 for the continuum: T_sph = T_elastic * k/|S| * sqrt(rho^3/rho0)/m.
-  {
-    const Lucy w(2);
-    double S = 0;
-    for (const Vec2& xj : x0) {
-      Vec2 dd = x0[0] - xj;
-      dd.x() -= Lx * std::nearbyint(dd.x() / Lx);
-      dd.y() -= Ly * std::nearbyint(dd.y() / Ly);
-      const double r = dd.norm();
-      if (r > 0 && r < p.h) S += std::sin(k * dd.y()) * dd.y() * w.F(r, p.h);
-    }
-    const double rho_s = summed_density(x0, p)[0], rho0 = std::sqrt(4.0 / 3.0);
-    const double T_sph = T_elastic * k / std::abs(S) * std::sqrt(rho_s * rho_s * rho_s / rho0) / p.mass;
-    d.value("period_sph_lattice_" + kind, T_sph, "linearised SPAM on the perfect lattice (lattice sum S(k))");
-    r.period_sph = T_sph;
-  }
+  r.period_sph = sph_lattice_period(x0, p, Lx, Ly, k, T_elastic);
+  d.value("period_sph_lattice_" + kind, r.period_sph, "linearised SPAM on the perfect lattice (lattice sum S(k))");
   r.period_elastic = T_elastic;
-  (void)U0;
   return r;
 }
 

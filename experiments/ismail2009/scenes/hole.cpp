@@ -87,6 +87,78 @@ HoleStress hole_stress(const HoleParams& p, const sph::TlSolver2D& body, const s
   return s;
 }
 
+namespace {
+
+/// One sample of the run (every 20 steps and the last): the peak particle stress, the fastest particle and the
+/// smoothed stress at the particle `top` into r; returns the largest particle speed.
+double record_sample(const sph::TlSolver2D& b, int top, HoleResult& r) {
+  double pk = 0;
+  for (int i = 0; i < b.n_real(); ++i) pk = std::max(pk, max_principal(b.cauchy(i)));
+  r.peak_sigma1_dynamic = std::max(r.peak_sigma1_dynamic, pk);
+  double vmax = 0;
+  for (int i = 0; i < b.n_real(); ++i) {
+    const double v = b.velocity(i).norm();
+    if (v > vmax) { vmax = v; r.fastest_X = b.X(i); }
+  }
+  r.history.push_back({b.time(), max_principal(b.smoothed_cauchy(top)), pk, vmax});
+  return vmax;
+}
+
+/// Least-squares slope of ln vmax over the last 3/omega of the finite samples (at least 3), in units of omega.
+void fit_growth_rate(HoleResult& r, double omega) {
+  double s0 = 0, st = 0, sy = 0, stt = 0, sty = 0;
+  const double t_last = r.history.empty() ? 0.0 : r.history.back().t;
+  for (const auto& h : r.history)
+    if (h.t >= t_last - 3.0 / omega && h.vmax > 0 && std::isfinite(h.vmax)) {
+      const double t = h.t * omega, y = std::log(h.vmax);
+      s0 += 1; st += t; sy += y; stt += t * t; sty += t * y;
+    }
+  if (s0 >= 3) r.growth_rate = (s0 * sty - st * sy) / (s0 * stt - st * st);
+}
+
+/// Disorder: distance of each particle's displacement from the mean of its 4 lattice neighbours (+-ps),
+/// over the particles that have all four (found through their lattice indices: the sheet's particles sit
+/// at (i ps, j ps), i, j in [0, n)), relative to the displacements.
+double zigzag(const HoleParams& p, const sph::TlSolver2D& body) {
+  const double ps = p.a / (p.n - 1);
+  std::vector<int> at(static_cast<std::size_t>(p.n) * p.n, -1);
+  auto index = [&](const Vec2& X) { return static_cast<long>(std::lround(X.y() / ps)) * p.n + std::lround(X.x() / ps); };
+  for (int i = 0; i < body.n_real(); ++i) at[index(body.X(i))] = i;
+  double num = 0, den = 0;
+  for (int i = 0; i < body.n_real(); ++i) {
+    const long ix = std::lround(body.X(i).x() / ps), iy = std::lround(body.X(i).y() / ps);
+    if (ix == 0 || iy == 0 || ix == p.n - 1 || iy == p.n - 1) continue;
+    Vec2 mean = Vec2::Zero();
+    bool all4 = true;
+    for (const long q : {iy * p.n + ix + 1, iy * p.n + ix - 1, (iy + 1) * p.n + ix, (iy - 1) * p.n + ix}) {
+      if (at[q] < 0) { all4 = false; break; }
+      mean += body.u(at[q]);
+    }
+    if (all4) { num += (body.u(i) - mean / 4).squaredNorm(); den += body.u(i).squaredNorm(); }
+  }
+  return std::sqrt(num / std::max(den, 1e-300));
+}
+
+/// The finite sheet at the end: its stress readout, the change of the smoothed (0, R) stress since top_before,
+/// its speeds against those of the run, and its disorder.
+void measure_at_rest(const HoleParams& p, const sph::TlSolver2D& body, double top_before, double vmin_after_ramp,
+                     HoleResult& r) {
+  const HoleStress st = hole_stress(p, body, [&](int i) { return body.cauchy(i); });
+  r.peak_sigma1 = st.peak_sigma1;
+  r.sigma1_hole_top = st.sigma1_hole_top;
+  r.smoothed_peak_sigma1 = st.smoothed_peak_sigma1;
+  r.smoothed_sigma1_hole_top = st.smoothed_sigma1_hole_top;
+  r.settle_change = std::abs(r.smoothed_sigma1_hole_top - top_before) / r.smoothed_sigma1_hole_top;
+  if (!r.history.empty() && vmin_after_ramp > 0 && std::isfinite(vmin_after_ramp))
+    r.speed_rise = r.history.back().vmax / vmin_after_ramp;
+  double vpeak = 0;
+  for (const auto& h : r.history) vpeak = std::max(vpeak, h.vmax);
+  if (vpeak > 0) r.rest_speed_ratio = r.history.back().vmax / vpeak;
+  r.zigzag = zigzag(p, body);
+}
+
+}  // namespace
+
 HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fractions,
                     const std::function<void(const sph::TlSolver2D&, double)>& snapshot) {
   if (p.n < 5) throw std::invalid_argument("run_hole: n >= 5");
@@ -107,15 +179,7 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
     if (b.steps() == 0) return false;
     const long s = b.steps() - 1;  // index of the step just taken
     if (s % 20 == 0 || s == n - 1) {
-      double pk = 0;
-      for (int i = 0; i < b.n_real(); ++i) pk = std::max(pk, max_principal(b.cauchy(i)));
-      r.peak_sigma1_dynamic = std::max(r.peak_sigma1_dynamic, pk);
-      double vmax = 0;
-      for (int i = 0; i < b.n_real(); ++i) {
-        const double v = b.velocity(i).norm();
-        if (v > vmax) { vmax = v; r.fastest_X = b.X(i); }
-      }
-      r.history.push_back({b.time(), max_principal(b.smoothed_cauchy(top)), pk, vmax});
+      const double vmax = record_sample(b, top, r);
       if (b.time() > t_ramp) vmin_after_ramp = std::min(vmin_after_ramp, vmax);
     }
     if (std::isnan(top_before) && b.time() >= t_end - 1.0 / omega) top_before = max_principal(b.smoothed_cauchy(top));
@@ -128,49 +192,10 @@ HoleResult run_hole(const HoleParams& p, const std::vector<double>& snapshot_fra
   const auto outcome = sph::run(body, {dt, n}, observe, [&](const sph::TlSolver2D& b) { progress.update(b.time(), b.steps()); });
   r.steps = static_cast<int>(outcome.steps);
   r.finite = !outcome.blew_up();
-  {  // least-squares slope of ln vmax over the last 3/omega of the finite samples
-    double s0 = 0, st = 0, sy = 0, stt = 0, sty = 0;
-    const double t_last = r.history.empty() ? 0.0 : r.history.back().t;
-    for (const auto& h : r.history)
-      if (h.t >= t_last - 3.0 / omega && h.vmax > 0 && std::isfinite(h.vmax)) {
-        const double t = h.t * omega, y = std::log(h.vmax);
-        s0 += 1; st += t; sy += y; stt += t * t; sty += t * y;
-      }
-    if (s0 >= 3) r.growth_rate = (s0 * sty - st * sy) / (s0 * stt - st * st);
-  }
+  fit_growth_rate(r, omega);
   r.wall_s = outcome.wall_s;
   if (r.finite) {
-    const HoleStress st = hole_stress(p, body, [&](int i) { return body.cauchy(i); });
-    r.peak_sigma1 = st.peak_sigma1;
-    r.sigma1_hole_top = st.sigma1_hole_top;
-    r.smoothed_peak_sigma1 = st.smoothed_peak_sigma1;
-    r.smoothed_sigma1_hole_top = st.smoothed_sigma1_hole_top;
-    r.settle_change = std::abs(r.smoothed_sigma1_hole_top - top_before) / r.smoothed_sigma1_hole_top;
-    if (!r.history.empty() && vmin_after_ramp > 0 && std::isfinite(vmin_after_ramp))
-      r.speed_rise = r.history.back().vmax / vmin_after_ramp;
-    double vpeak = 0;
-    for (const auto& h : r.history) vpeak = std::max(vpeak, h.vmax);
-    if (vpeak > 0) r.rest_speed_ratio = r.history.back().vmax / vpeak;
-    // Disorder: distance of each particle's displacement from the mean of its 4 lattice neighbours (+-ps),
-    // over the particles that have all four (found through their lattice indices: the sheet's particles sit
-    // at (i ps, j ps), i, j in [0, n)).
-    const double ps = p.a / (p.n - 1);
-    std::vector<int> at(static_cast<std::size_t>(p.n) * p.n, -1);
-    auto index = [&](const Vec2& X) { return static_cast<long>(std::lround(X.y() / ps)) * p.n + std::lround(X.x() / ps); };
-    for (int i = 0; i < body.n_real(); ++i) at[index(body.X(i))] = i;
-    double num = 0, den = 0;
-    for (int i = 0; i < body.n_real(); ++i) {
-      const long ix = std::lround(body.X(i).x() / ps), iy = std::lround(body.X(i).y() / ps);
-      if (ix == 0 || iy == 0 || ix == p.n - 1 || iy == p.n - 1) continue;
-      Vec2 mean = Vec2::Zero();
-      bool all4 = true;
-      for (const long q : {iy * p.n + ix + 1, iy * p.n + ix - 1, (iy + 1) * p.n + ix, (iy - 1) * p.n + ix}) {
-        if (at[q] < 0) { all4 = false; break; }
-        mean += body.u(at[q]);
-      }
-      if (all4) { num += (body.u(i) - mean / 4).squaredNorm(); den += body.u(i).squaredNorm(); }
-    }
-    r.zigzag = std::sqrt(num / std::max(den, 1e-300));
+    measure_at_rest(p, body, top_before, vmin_after_ramp, r);
     if (snapshot) snapshot(body, body.time());
   }
   return r;
