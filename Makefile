@@ -35,7 +35,7 @@ ORDERED = $(filter $(TARGETS),$(LONGEST_FIRST)) $(filter-out $(LONGEST_FIRST),$(
 DONE    = $(foreach t,$(ORDERED),$(RESULTS)/$(t)/.done)
 FIGS    = $(foreach t,$(ORDERED),$(FIGURES)/$(t).png)
 
-.PHONY: all figures test sanitize check paper status-table bench bench-ab bench-peer peers peers-quick deps build build-drivers configure ctest results plots quick clean help timings \
+.PHONY: all figures figures-locked test test-locked sanitize check paper status-table bench bench-ab bench-peer peers peers-quick deps build build-drivers configure ctest results plots quick clean help timings \
         check-targets list-targets list-runs archive verify-archive test-paraview
 .DEFAULT_GOAL := help
 
@@ -150,10 +150,17 @@ plots: $(FIGS)
 $(RESULTS)/check.csv: $(DONE) reference/check.py $(wildcard reference/*.csv)
 	$(PY) reference/check.py --results $(RESULTS) $(CHECK_FLAGS)
 
+# One pipeline at a time per results folder (issue 47 item 2): make figures and make test hold a lock on their
+# results folder (tools/results_lock.sh) while their sub-make runs; a second one into the same folder is refused
+# at once, naming the first.
+LOCK = tools/results_lock.sh
+
 # The main job: everything at paper resolution, then the check (fails the make on any FAIL), then the
 # timing table of the drivers (results/timings.csv) and the report (paper/build/index.html), both also when
 # the check fails (the report shows the FAIL rows).
-figures: deps build-drivers
+figures:
+	@$(LOCK) $(RESULTS) "make figures" $(MAKE) --no-print-directory figures-locked
+figures-locked: deps build-drivers
 	@date +%s > $(RESULTS)/.figures_start 2>/dev/null || { mkdir -p $(RESULTS); date +%s > $(RESULTS)/.figures_start; }
 	OMP_NUM_THREADS=1 $(MAKE) --no-print-directory -j $(RUN_JOBS) plots
 	@status=0; $(MAKE) --no-print-directory check || status=$$?; \
@@ -189,7 +196,9 @@ quick:
 	$(PY) paper/build_report.py --results results/quick --figures results/quick/figures --reference reference \
 	  --out results/quick/report/index.html
 
-test: deps check-targets build ctest quick peers-quick
+test:
+	@$(LOCK) results/quick "make test" $(MAKE) --no-print-directory test-locked
+test-locked: deps check-targets build ctest quick peers-quick
 
 # A citable archive of one reproduction (tools/archive.py): results (with the run jobs' folders),
 # figures, the report, PROVENANCE.json (code version and uncommitted changes, every driver command line, the
