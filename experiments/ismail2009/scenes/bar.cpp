@@ -1,11 +1,13 @@
 #include "ismail2009/scenes/bar.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "core/kernels.hpp"
 #include "core/run_loop.hpp"
+#include "total_lagrangian/sph_matrices.hpp"
 
 namespace scenes {
 
@@ -112,6 +114,18 @@ double window_rms_error(const std::vector<double>& t, const std::vector<double>&
   for (std::size_t i = 0; i < t.size(); ++i)
     if (t[i] >= t0 && t[i] <= t1) { const double e = v[i] - exact(t[i]); s += e * e; ++n; }
   return n ? std::sqrt(s / n) : std::numeric_limits<double>::quiet_NaN();
+}
+
+double lattice_dt_crit_over_h_over_c(double ps, double h) {
+  const sph::KernelFn k = sph::make_kernel_fn("modified_mollifier", 1, h);
+  double smax = 0;
+  for (int i = 1; i <= 20000; ++i) {
+    const double kk = M_PI / ps * i / 20000.0;
+    double s = 0;
+    for (int j = 1; j * ps < k.radius; ++j) s += 2 * ps * std::abs(k.dWdr(j * ps)) * std::sin(kk * j * ps);
+    smax = std::max(smax, std::abs(s));
+  }
+  return 2.0 / (smax * h);
 }
 
 }  // namespace scenes

@@ -55,4 +55,9 @@ double centroid_time(const std::vector<double>& t, const std::vector<double>& v,
 double window_rms_error(const std::vector<double>& t, const std::vector<double>& v,
                         const std::function<double(double)>& exact, double t0, double t1);
 
+/// Interior von Neumann analysis of (4.4) with the lattice operator X X, modified mollifier of support radius h
+/// on the lattice of spacing ps: dt_crit = 2 / (c max_k |s(k)|), s(k) = 2 ps sum_j |W'(j ps)| sin(k j ps).
+/// Returns dt_crit over h/c.
+double lattice_dt_crit_over_h_over_c(double ps, double h);
+
 }  // namespace scenes
