@@ -220,10 +220,8 @@ DriverOption<std::string> Driver::location(const std::string& name, std::string&
 int Driver::run(int argc, char** argv, const std::function<void()>& body) {
   // Last in --help, and not recorded in the headers: it bounds how long a run may take, not what it computes.
   double max_run_hours = 24.0;
-  app_->add_option("--max-run-hours", max_run_hours,
-                   "refuse a run whose time to go, estimated after its first seconds, exceeds this (0: no limit)")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+  app_->add_option("--max-run-hours", max_run_hours, "refuse a run whose time to go, estimated after its first "
+                   "seconds, exceeds this (0: no limit)")->capture_default_str()->check(CLI::NonNegativeNumber);
   try {
     app_->parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -242,11 +240,11 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
       write_timing(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                    particle_steps_taken() - work0);
     return 0;
-  } catch (const RunTooLong& e) {
-    std::string given;
+  } catch (const RunTooLong& e) {  // named with the parameters given, which made it that long
+    std::cerr << name_ << ": refused: " << e.what() << "; parameters given:";
     for (const auto& [k, f] : recorders_)
-      if (this->given(k)) given += " --" + k + " " + f();
-    std::cerr << name_ << ": refused: " << e.what() << (given.empty() ? "" : "; parameters given:" + given) << "\n";
+      if (given(k)) std::cerr << " --" << k << " " << f();
+    std::cerr << "\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << name_ << ": error: " << e.what() << "\n";
