@@ -106,3 +106,15 @@ TEST(DriverQuick, AQuickValueOutOfItsBoundsIsADefect) {
   double e = 0.5;
   EXPECT_NO_THROW(d.param("e", e, "within").above(0).below(1).quick(0.25));
 }
+
+// A numeric bound on a text option refused every value as not a number (I-bar's --modulus, H-fig3's --density
+// could not be given at all): a driver defect, found when the option is declared.
+TEST(DriverQuick, ANumericBoundOnATextOptionIsADefect) {
+  sph::Driver d("test_text_bound", "T", "text options");
+  std::string s = "sum";
+  std::vector<std::string> names{"a"};
+  EXPECT_THROW(d.param("s", s, "a name").positive(), std::logic_error);
+  EXPECT_THROW(d.param("names", names, "names").at_least(0), std::logic_error);
+  std::string t = "sum";
+  EXPECT_NO_THROW(d.param("t", t, "a name").one_of({"sum", "cont"}));
+}

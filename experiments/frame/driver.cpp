@@ -29,6 +29,9 @@ std::string to_text(const T& v) {
   }
 }
 
+template <class T>
+constexpr bool is_text = std::is_same_v<T, std::string> || std::is_same_v<T, std::vector<std::string>>;
+
 // The numbers a parameter holds (none for text): what a bound of DriverOption tests its default and quick value with.
 template <class T>
 std::vector<double> numbers_of(const T& v) {
@@ -87,11 +90,13 @@ void check_declared(const OptionState& s, const OptionState::Bound& b, const std
 }  // namespace
 
 // A bound: the default (`current`) and any quick value must keep it, every value given must (CLI11 validator).
+// On a text option it is a defect of the driver (every value would be refused as not a number): one_of is meant.
 void add_bound(OptionState& s, const char* relation, double limit, bool (*holds)(double, double),
-               const std::vector<double>& current) {
+               const std::vector<double>& current, bool text) {
   std::ostringstream want;
   want << relation << " " << format_number(limit);
   const std::string rule = want.str();
+  if (text) throw std::logic_error(s.o->get_name() + ": a bound " + rule + " on a text option (one_of lists its values)");
   const OptionState::Bound b{rule, limit, holds};
   check_declared(s, b, current, "default");
   check_declared(s, b, s.quick_numbers, "quick value");
@@ -134,22 +139,22 @@ DriverOption<T>& DriverOption<T>::one_of(const std::vector<std::string>& allowed
 
 template <class T>
 DriverOption<T>& DriverOption<T>::above(double lo) {
-  detail::add_bound(*s_, ">", lo, [](double v, double l) { return v > l; }, numbers_of(*var_));
+  detail::add_bound(*s_, ">", lo, [](double v, double l) { return v > l; }, numbers_of(*var_), is_text<T>);
   return *this;
 }
 template <class T>
 DriverOption<T>& DriverOption<T>::at_least(double lo) {
-  detail::add_bound(*s_, ">=", lo, [](double v, double l) { return v >= l; }, numbers_of(*var_));
+  detail::add_bound(*s_, ">=", lo, [](double v, double l) { return v >= l; }, numbers_of(*var_), is_text<T>);
   return *this;
 }
 template <class T>
 DriverOption<T>& DriverOption<T>::below(double hi) {
-  detail::add_bound(*s_, "<", hi, [](double v, double l) { return v < l; }, numbers_of(*var_));
+  detail::add_bound(*s_, "<", hi, [](double v, double l) { return v < l; }, numbers_of(*var_), is_text<T>);
   return *this;
 }
 template <class T>
 DriverOption<T>& DriverOption<T>::at_most(double hi) {
-  detail::add_bound(*s_, "<=", hi, [](double v, double l) { return v <= l; }, numbers_of(*var_));
+  detail::add_bound(*s_, "<=", hi, [](double v, double l) { return v <= l; }, numbers_of(*var_), is_text<T>);
   return *this;
 }
 

@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
   d.param("amplitude", A, "maximum displacement");
   d.param("dt", dt, "RK4 time step").positive().quick(0.2);
   d.param("periods", periods, "wave periods to follow").positive();
-  d.param("density", density, "sum or cont").positive();
+  d.param("density", density, "sum or cont").one_of({"sum", "cont"});
   return d.run(argc, argv, [&] {
     auto out = d.csv("energies.csv", {"wave", "t", "amplitude", "K", "U"});
     const double Ly = n * std::sqrt(3.0) / 2;

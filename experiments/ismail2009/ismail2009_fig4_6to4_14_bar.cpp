@@ -62,7 +62,7 @@ void declare(sph::Driver& d, Params& p) {
   d.param("dt-factor", p.dt_factor, "dt / (h/c) for the validation runs (CHOSEN)").positive();
   d.param("t-end", p.t_end, "simulated time, s (CHOSEN)").positive();
   d.param("sweep-steps", p.sweep_steps, "steps per stability trial (CHOSEN)").positive().quick(1500);
-  d.param("modulus", p.modulus, "p_wave (lambda + 2 mu, 1D strain) or young (E, as Algorithm 4.1)").positive();
+  d.param("modulus", p.modulus, "p_wave (lambda + 2 mu, 1D strain) or young (E, as Algorithm 4.1)").one_of({"p_wave", "young"});
 }
 
 // The bar runs of the study: what they share and the file of their gauge histories.
