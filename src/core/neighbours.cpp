@@ -6,26 +6,6 @@
 
 namespace sph {
 
-CellList2D::CellList2D(const Box2& box, double radius) : box_(box), radius_(radius) {
-  if (!(radius > 0)) throw std::invalid_argument("CellList2D: search radius must be positive");
-  if (!(box.Lx() > 0) || !(box.Ly() > 0)) throw std::invalid_argument("CellList2D: empty box");
-  if ((box.periodic_x && radius > 0.5 * box.Lx()) || (box.periodic_y && radius > 0.5 * box.Ly()))
-    throw std::invalid_argument("CellList2D: search radius " + std::to_string(radius) +
-                                " exceeds half the period; the minimum image would miss neighbours");
-  // Cells slightly wider than the radius: were the width exactly `radius` (e.g. L = 1, radius = 0.1), the
-  // rounding in cell_index could put two particles a little closer than `radius` two cells apart, and the
-  // 3-cell stencil would miss the pair. The 1e-9 margin covers rounding for positions up to ~1e6 cell
-  // widths from the origin.
-  const double width = radius * (1.0 + 1e-9);
-  nx_ = std::max(1, static_cast<int>(std::floor(box.Lx() / width)));
-  ny_ = std::max(1, static_cast<int>(std::floor(box.Ly() / width)));
-  // With fewer than 3 cells in a periodic direction the 3-cell stencil would visit a cell twice:
-  // scan that direction's cells once each instead.
-  if (box.periodic_x && nx_ < 3) { span_x_ = 0; nx_ = 1; }
-  if (box.periodic_y && ny_ < 3) { span_y_ = 0; ny_ = 1; }
-  cell_start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
-}
-
 void CellList2D::build(const std::vector<Vec2>& x) {
   const std::size_t n = x.size();
   cell_of_.resize(n);
@@ -45,11 +25,6 @@ void CellList2D::build(const std::vector<Vec2>& x) {
   cell_start_[0] = 0;
   x_sorted_.resize(n);
   for (std::size_t k = 0; k < n; ++k) x_sorted_[k] = x[sorted_[k]];
-}
-
-void CellList2D::throw_radius_too_large(double radius) const {
-  throw std::invalid_argument("CellList2D: query radius " + std::to_string(radius) +
-                              " exceeds the radius the list was built for, " + std::to_string(radius_));
 }
 
 std::vector<std::vector<std::size_t>> brute_force_neighbours(const std::vector<Vec2>& x, const Box2& box,
