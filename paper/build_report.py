@@ -226,8 +226,9 @@ row that does not hold.</p>
     parts.append('<h2 id="timings">Run times</h2>' + timings_html(os.path.join(args.results, "timings.csv")))
     parts.append("</body></html>")
     os.makedirs(os.path.dirname(args.out), exist_ok=True)
-    with open(args.out, "w") as f:
+    with open(args.out + ".part", "w") as f:
         f.write("\n".join(parts))
+    os.replace(args.out + ".part", args.out)  # whole or not at all (issue 47): a killed run leaves the previous file
     print(f"build_report: wrote {args.out} ({len(targets)} targets, {len(check)} checks)")
 
 

@@ -346,6 +346,15 @@ def load_values(results_dir):
                 sys.exit(f"check: {target}/{r['quantity']} written twice ({path})")
             values[key] = float(r["value"])
             sources[key] = source
+    # A run interrupted after its first value leaves only the values file's temporary (outputs appear whole or not
+    # at all, src/io/atomic_output.hpp): its target's rows then FAIL naming the file and the missing record.
+    for part in sorted(glob.glob(os.path.join(results_dir, "*", "values_*.csv.part"))):
+        path = part[:-len(".part")]
+        if not os.path.exists(path):
+            record = "timing_" + os.path.basename(path)[len("values_"):]
+            unreadable.setdefault(os.path.basename(os.path.dirname(path)), []).append(
+                f"{os.path.relpath(path, results_dir)} is not there, only its .part: its run did not complete "
+                f"(no {record}, which the driver writes last): rerun the target")
     return values, sources, unreadable
 
 
@@ -537,11 +546,12 @@ def main():
                               checkout))
     out_path = os.path.join(args.results, "check.csv")
     os.makedirs(args.results, exist_ok=True)
-    with open(out_path, "w", newline="") as f:
+    with open(out_path + ".part", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=OUT_COLUMNS, restval="")
         w.writeheader()
         w.writerows(rows)
 
+    os.replace(out_path + ".part", out_path)  # whole or not at all (issue 47): a killed run leaves the previous file
     table = pd.DataFrame(rows, columns=OUT_COLUMNS).fillna("")
     with pd.option_context("display.max_rows", None, "display.max_colwidth", 60, "display.width", 250):
         print(table[["target", "quantity", "published", "reproduced", "tolerance", "status"]].to_string(index=False))

@@ -5,9 +5,10 @@ Through the Makefile's own target rules (results/<target>/.done, the quick runs 
 driver of milliseconds, then G-tab1, whose values file is written from its first second on. The make is
 interrupted while G-tab1 runs, by SIGINT (Ctrl-C: to the whole process group, as a terminal sends it) and,
 in a second run, by SIGTERM. Then:
-  - make exits non-zero; G-disp is complete (.done, its completion record); G-tab1 has no .done and no
-    completion record (timing_<driver>.csv), though its values file is there;
-  - reference/check.py refuses G-tab1's rows by the name of that values file ("did not complete");
+  - make exits non-zero; G-disp is complete (.done, its completion record); G-tab1 has no .done, no
+    completion record (timing_<driver>.csv) and no values file: only its temporary <name>.part, which nothing
+    reads (outputs are renamed when complete, src/io/atomic_output.hpp);
+  - reference/check.py refuses G-tab1's rows, naming the values file that is not there;
   - the same make again runs only G-tab1 (G-disp's completion record is not rewritten) and completes it, and
     the check then accepts its rows.
 Usage: test_interrupt.py --build BUILD_DIR (ctest passes it; the drivers must have been built there).
@@ -54,7 +55,7 @@ class Interrupted(unittest.TestCase):
             values = os.path.join(results, SECOND, f"values_{SECOND_DRIVER}.csv")
             p = make(results, start_new_session=True)
             deadline = time.time() + 120
-            while not os.path.exists(values) and p.poll() is None and time.time() < deadline:
+            while not os.path.exists(values + ".part") and p.poll() is None and time.time() < deadline:
                 time.sleep(0.05)
             self.assertIsNone(p.poll(), "make ended before the second target's driver had started")
             time.sleep(0.5)  # inside the run: its values file is open, its rows being computed
@@ -67,15 +68,16 @@ class Interrupted(unittest.TestCase):
             self.assertEqual(len(first_record), 1)
             first_mtime = os.path.getmtime(os.path.join(results, FIRST, first_record[0]))
             self.assertFalse(os.path.exists(os.path.join(results, SECOND, ".done")))
-            self.assertTrue(os.path.exists(values))  # left behind, looking like a values file ...
+            self.assertFalse(os.path.exists(values))  # not complete: only its .part, which nothing reads
             self.assertFalse(os.path.exists(os.path.join(results, SECOND, f"timing_{SECOND_DRIVER}.csv")))
-            code, table = check(results)  # ... which the check refuses, by name
+            code, table = check(results)  # the check refuses the target's rows, by the file's name
             self.assertEqual(code, 1)
             self.assertGreater(len(table), 0)
             for _, r in table.iterrows():
                 self.assertEqual(r["status"], "FAIL", r["quantity"])
                 self.assertTrue("did not complete" in r["note"] or "no reproduced value" in r["note"], r["note"])
-            self.assertTrue(any("did not complete" in n and f"values_{SECOND_DRIVER}.csv" in n for n in table["note"]))
+            self.assertTrue(any("did not complete" in n and f"values_{SECOND_DRIVER}.csv" in n for n in table["note"]),
+                            table["note"].tolist())
 
             p = make(results)
             out, _ = p.communicate(timeout=600)

@@ -1,5 +1,6 @@
 // Output files: CSV (header metadata, quoting, exact numbers) through read_csv, and HDF5 snapshots with
-// their XDMF sidecar.
+// their XDMF sidecar; both appear whole or not at all (written as .part, renamed when closed), and a failed
+// write (a file-size limit here, as a full disk would) is an error naming the file.
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -10,10 +11,13 @@
 #include <limits>
 #include <random>
 #include <regex>
+#include <csignal>
 #include <set>
 #include <sstream>
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include "io/atomic_output.hpp"
 #include "io/csv.hpp"
 #include "io/hdf5_snapshot.hpp"
 #include "io/run_info.hpp"
@@ -192,15 +196,19 @@ TEST(Hdf5Snapshot, RoundTripOfTwoSnapshotsAndTheXdmfSidecar) {
     series.write(s0);
     series.write(s1);
     EXPECT_EQ(series.count(), 2u);
-    // Readable while the series is still open (post-processing during a run).
-    EXPECT_EQ(sph::count_snapshots(h5), 2u);
-    expect_equal(sph::read_snapshot(h5, 1), s1);
+    // Readable while the series is still open (post-processing during a run), under its temporary name;
+    // the final name appears only when the series is complete.
+    EXPECT_FALSE(fs::exists(h5));
+    EXPECT_EQ(sph::count_snapshots(sph::partial_path(h5)), 2u);
+    expect_equal(sph::read_snapshot(sph::partial_path(h5), 1), s1);
     series.write(s2);
     sph::Snapshot bad = s0;
     bad.density.pop_back();
     EXPECT_THROW(series.write(bad), std::invalid_argument);
     EXPECT_EQ(series.count(), 3u);
   }
+  EXPECT_FALSE(fs::exists(sph::partial_path(h5)));
+  EXPECT_FALSE(fs::exists(sph::partial_path(fs::path(h5).replace_extension(".xdmf"))));
   EXPECT_EQ(sph::count_snapshots(h5), 3u);
   expect_equal(sph::read_snapshot(h5, 0), s0);
   expect_equal(sph::read_snapshot(h5, 1), s1);
@@ -260,6 +268,77 @@ TEST(Hdf5Snapshot, ReopeningTruncatesTheSeries) {
   }
   EXPECT_EQ(sph::count_snapshots(h5), 1u);
   EXPECT_EQ(sph::read_snapshot(h5, 0).position.size(), 6u);
+}
+
+// A file appears under its name only when complete; a writer left by an exception leaves the previous complete
+// file as it was and no temporary one (a run killed at any instant leaves the previous file or none).
+TEST(AtomicOutput, ACsvAppearsWhenClosedAndAFailedRunKeepsThePreviousFile) {
+  const fs::path path = scratch("atomic/values.csv");
+  {
+    sph::CsvWriter w(path, sample_info(), {"a"});
+    w.row(1);
+    EXPECT_FALSE(fs::exists(path));
+    EXPECT_TRUE(fs::exists(sph::partial_path(path)));
+  }
+  ASSERT_TRUE(fs::exists(path));
+  EXPECT_FALSE(fs::exists(sph::partial_path(path)));
+  try {
+    sph::CsvWriter w(path, sample_info(), {"a"});
+    w.row(2);
+    throw std::runtime_error("the run failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_FALSE(fs::exists(sph::partial_path(path)));
+  const sph::CsvTable t = sph::read_csv(path);
+  ASSERT_EQ(t.rows.size(), 1u);
+  EXPECT_EQ(t.rows[0][0], "1");
+  // close() says when it is done; a moved writer is closed once, by its new owner.
+  sph::CsvWriter a(path, sample_info(), {"a"});
+  a.row(3);
+  sph::CsvWriter b = std::move(a);
+  b.close();
+  EXPECT_EQ(sph::read_csv(path).rows[0][0], "3");
+  EXPECT_THROW(b.row(4), std::logic_error);
+}
+
+TEST(AtomicOutput, ASeriesLeftByAnExceptionLeavesThePreviousOne) {
+  const fs::path h5 = scratch("atomic/series.h5");
+  { sph::SnapshotSeries s(h5, sample_info()); s.write(make_snapshot(3, 0.0, 0, true, 7)); }
+  try {
+    sph::SnapshotSeries s(h5, sample_info());
+    s.write(make_snapshot(5, 0.0, 0, true, 8));
+    throw std::runtime_error("the run failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_FALSE(fs::exists(sph::partial_path(h5)));
+  EXPECT_EQ(sph::count_snapshots(h5), 1u);
+  EXPECT_EQ(sph::read_snapshot(h5, 0).position.size(), 3u);
+}
+
+// A write beyond a file-size limit (as one onto a full disk) fails with the file's name and errno, and leaves
+// neither the file nor its temporary; the limit is the process's, restored at the end.
+TEST(AtomicOutput, AWriteBeyondAFileSizeLimitIsAnErrorNamingTheFile) {
+  const fs::path path = scratch("atomic/big.csv");
+  const auto previous = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit old{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
+  rlimit small = old;
+  small.rlim_cur = 4096;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  try {
+    sph::CsvWriter w(path, sample_info(), {"x"});
+    for (int i = 0; i < 10000; ++i) w.row(1.0 / 3.0 + i);
+    w.close();
+  } catch (const std::runtime_error& e) {
+    message = e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, previous);
+  EXPECT_NE(message.find(sph::partial_path(path).string()), std::string::npos) << message;
+  EXPECT_NE(message.find("errno 27"), std::string::npos) << message;  // EFBIG
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_FALSE(fs::exists(sph::partial_path(path)));
 }
 
 }  // namespace

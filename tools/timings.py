@@ -41,7 +41,7 @@ def main():
     out = os.path.join(args.results, "timings.csv")
     cols = ["target", "driver", "wall_s", "particle_steps", "particle_steps_per_s", "threads"]
     total = steps_total = 0.0
-    with open(out, "w", newline="") as f:
+    with open(out + ".part", "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(cols)
         for r in rows:
@@ -50,6 +50,7 @@ def main():
             steps_total += ps
             w.writerow([r["target"], r["driver"], f"{wall:.3f}", f"{ps:.0f}", f"{ps / wall:.4g}" if wall > 0 else "",
                         r["threads"]])
+    os.replace(out + ".part", out)  # whole or not at all (issue 47): a killed run leaves the previous file
     print(f"{'target':10} {'driver':48} {'wall_s':>9} {'particle-steps':>15} {'per s':>10} threads")
     for r in rows:
         wall, ps = float(r["wall_s"]), float(r["particle_steps"])

@@ -1,67 +1,24 @@
 #include "frame/driver.hpp"
 
+#include "frame/option_text.hpp"
+
 #include "core/run_loop.hpp"
 #include "frame/progress.hpp"
+#include "io/atomic_output.hpp"
 
 #include <CLI/CLI.hpp>
 #include <omp.h>
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <exception>
 #include <fstream>
 #include <iostream>
 
 namespace sph {
 
-namespace {
-
-template <class T>
-std::string to_text(const T& v) {
-  if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) return format_number(static_cast<double>(v));
-  else if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
-  else if constexpr (std::is_same_v<T, std::string>) return v;
-  else {
-    std::ostringstream s;
-    bool first = true;
-    for (const auto& x : v) { s << (first ? "" : " ") << to_text(x); first = false; }
-    return s.str();
-  }
-}
-
-template <class T>
-constexpr bool is_text = std::is_same_v<T, std::string> || std::is_same_v<T, std::vector<std::string>>;
-
-// The numbers a parameter holds (none for text): what a bound of DriverOption tests its default and quick value with.
-template <class T>
-std::vector<double> numbers_of(const T& v) {
-  if constexpr (std::is_arithmetic_v<T>) return {static_cast<double>(v)};
-  else if constexpr (std::is_same_v<T, std::string>) return {};
-  else {
-    std::vector<double> out;
-    for (const auto& x : v)
-      for (double y : numbers_of(x)) out.push_back(y);
-    return out;
-  }
-}
-
-// A value as --help shows it (numbers as CLI11 shows the defaults).
-template <class T>
-std::string help_text(const T& v) {
-  if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
-  else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, std::string>) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  } else {
-    if (v.empty()) return "none";
-    std::string out;
-    for (const auto& x : v) out += (out.empty() ? "" : " ") + help_text(x);
-    return out;
-  }
-}
-
-}  // namespace
+using namespace option_text;  // to_text, help_text, numbers_of, is_text
 
 namespace detail {
 
@@ -233,6 +190,7 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
     return app_->exit(e);
   }
   Progress::run_limit_s() = max_run_hours * 3600.0;
+  std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit (ulimit -f) then fails the write (EFBIG), named, not a kill
   try {
     if (quick_)
       for (const auto& s : options_)
@@ -241,6 +199,8 @@ int Driver::run(int argc, char** argv, const std::function<void()>& body) {
     const long long work0 = particle_steps_taken();
     prepare_output();
     body();
+    if (values_) values_->close();  // complete before the record that says the run is
+    throw_if_output_failed();
     if (!printing_only_)
       write_timing(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                    particle_steps_taken() - work0);
@@ -285,6 +245,7 @@ void Driver::retarget(const std::string& target) {
 void Driver::write_timing(double wall_s, long long particle_steps) const {
   CsvWriter t(completion_record(), info(), {"target", "driver", "wall_s", "particle_steps", "threads"});
   t.row(target_, name_, wall_s, static_cast<double>(particle_steps), omp_get_max_threads());
+  t.close();
 }
 
 RunInfo Driver::info() const {

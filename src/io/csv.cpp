@@ -1,7 +1,11 @@
 #include "io/csv.hpp"
 
+#include <exception>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+
+#include "io/atomic_output.hpp"
 
 namespace sph {
 
@@ -14,10 +18,11 @@ static std::string one_line(std::string s) {
 }
 
 CsvWriter::CsvWriter(const std::filesystem::path& path, const RunInfo& info, std::vector<std::string> columns)
-    : path_(path), ncols_(columns.size()) {
+    : path_(path), ncols_(columns.size()), uncaught_(std::uncaught_exceptions()) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  out_.open(path);
-  if (!out_) throw std::runtime_error("cannot write " + path.string());
+  out_.open(partial_path(path));
+  if (!out_) throw std::runtime_error(write_error("cannot write", partial_path(path)));
+  open_ = true;
   out_ << "# driver = " << one_line(info.driver) << "\n# target = " << one_line(info.target) << "\n";
   if (!info.description.empty()) out_ << "# description = " << one_line(info.description) << "\n";
   out_ << "# code_version = " << code_version() << "\n# date = " << utc_timestamp() << "\n";
@@ -27,15 +32,60 @@ CsvWriter::CsvWriter(const std::filesystem::path& path, const RunInfo& info, std
   out_ << "\n";
   for (std::size_t i = 0; i < columns.size(); ++i) out_ << (i ? "," : "") << quote(columns[i]);
   out_ << "\n";
+  if (!out_) throw std::runtime_error(write_error("write failed:", partial_path(path_)));
+}
+
+CsvWriter::CsvWriter(CsvWriter&& o) noexcept
+    : path_(std::move(o.path_)), ncols_(o.ncols_), out_(std::move(o.out_)), open_(std::exchange(o.open_, false)),
+      uncaught_(o.uncaught_) {}
+
+CsvWriter& CsvWriter::operator=(CsvWriter&& o) noexcept {
+  if (this != &o) {
+    finish();
+    path_ = std::move(o.path_);
+    ncols_ = o.ncols_;
+    out_ = std::move(o.out_);
+    open_ = std::exchange(o.open_, false);
+    uncaught_ = o.uncaught_;
+  }
+  return *this;
+}
+
+CsvWriter::~CsvWriter() { finish(); }
+
+void CsvWriter::finish() noexcept {
+  if (!open_) return;
+  close_or_discard(uncaught_, [this] { close(); }, [this] {
+    open_ = false;
+    out_.close();
+    std::filesystem::remove(partial_path(path_));
+  });
+}
+
+void CsvWriter::close() {
+  if (!open_) throw std::logic_error(path_.string() + ": closed twice");
+  open_ = false;
+  const auto part = partial_path(path_);
+  errno = 0;
+  out_.flush();
+  if (out_) out_.close();
+  if (out_.fail()) {
+    const std::string message = write_error("write failed:", part);
+    std::error_code ec;
+    std::filesystem::remove(part, ec);
+    throw std::runtime_error(message);
+  }
+  commit_partial(part, path_);
 }
 
 void CsvWriter::write_cells(const std::vector<std::string>& cells) {
   if (cells.size() != ncols_)
     throw std::logic_error(path_.string() + ": row has " + std::to_string(cells.size()) + " cells, header " +
                            std::to_string(ncols_));
+  if (!open_) throw std::logic_error(path_.string() + ": row written after close");
   for (std::size_t i = 0; i < cells.size(); ++i) out_ << (i ? "," : "") << cells[i];
   out_ << "\n";
-  if (!out_) throw std::runtime_error("write failed: " + path_.string());
+  if (!out_) throw std::runtime_error(write_error("write failed:", partial_path(path_)));
 }
 
 std::string CsvWriter::quote(const std::string& s) {

@@ -3,6 +3,8 @@
 //   col1,col2,...
 //   rows
 // Lines starting with '#' are comments to pandas (comment='#') and to the plotting scripts.
+// The file is written as <path>.part and renamed to <path> when closed (io/atomic_output.hpp): by close(), or by the
+// destructor when no exception is on its way out (a writer left by an exception is discarded: its .part removed).
 #pragma once
 
 #include <filesystem>
@@ -18,6 +20,16 @@ namespace sph {
 class CsvWriter {
  public:
   CsvWriter(const std::filesystem::path& path, const RunInfo& info, std::vector<std::string> columns);
+  CsvWriter(CsvWriter&& other) noexcept;
+  CsvWriter& operator=(CsvWriter&& other) noexcept;
+  CsvWriter(const CsvWriter&) = delete;
+  CsvWriter& operator=(const CsvWriter&) = delete;
+  /// Closes as close() does, or discards the file while an exception unwinds; a failure to close is recorded
+  /// (record_output_failure), as a destructor cannot throw it.
+  ~CsvWriter();
+  /// Flushes, closes and renames the file to its final name; throws naming the file and errno if any write
+  /// failed. Nothing may be written after it.
+  void close();
 
   template <class... T>
   void row(const T&... values) {
@@ -38,9 +50,13 @@ class CsvWriter {
  private:
   static std::string quote(const std::string& s);
 
+  void finish() noexcept;  // the destructor's and move assignment's close or discard
+
   std::filesystem::path path_;
-  std::size_t ncols_;
+  std::size_t ncols_ = 0;
   std::ofstream out_;
+  bool open_ = false;      // false once closed, discarded or moved from
+  int uncaught_ = 0;       // std::uncaught_exceptions() at construction: more at destruction = unwinding
 };
 
 /// A parsed CSV: the header comments as key/value pairs, column names and string cells.

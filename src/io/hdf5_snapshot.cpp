@@ -6,8 +6,19 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "io/atomic_output.hpp"
+
 namespace sph {
 namespace {
+
+// HDF5 prints its error stack to stderr by default; our own message names the file and the failure in one
+// line, so the stack is switched off (once, for the process) before any HDF5 call of ours. And HDF5 closes what
+// is open at exit: after a failed write (a full disk) its close of that file crashes (SIGSEGV, 1.10.8) where the
+// run should exit with its error; every series is closed by its own code, so that clean-up is not registered.
+void quiet_hdf5() {
+  static const bool once = (H5dont_atexit(), H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr), true);
+  (void)once;
+}
 
 void check(herr_t status, const char* what) {
   if (status < 0) throw std::runtime_error(std::string("HDF5: ") + what + " failed");
@@ -80,9 +91,11 @@ std::string group_name(std::size_t i) {
 }  // namespace
 
 SnapshotSeries::SnapshotSeries(const std::filesystem::path& h5_path, const RunInfo& info)
-    : h5_(h5_path), xdmf_(std::filesystem::path(h5_path).replace_extension(".xdmf")) {
+    : h5_(h5_path), xdmf_(std::filesystem::path(h5_path).replace_extension(".xdmf")),
+      uncaught_(std::uncaught_exceptions()) {
+  quiet_hdf5();
   if (h5_.has_parent_path()) std::filesystem::create_directories(h5_.parent_path());
-  file_ = checked(H5Fcreate(h5_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create file");
+  file_ = checked(H5Fcreate(partial_path(h5_).c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create file");
   hid_t root = static_cast<hid_t>(file_);
   write_attribute(root, "driver", info.driver);
   write_attribute(root, "target", info.target);
@@ -95,7 +108,23 @@ SnapshotSeries::SnapshotSeries(const std::filesystem::path& h5_path, const RunIn
 }
 
 SnapshotSeries::~SnapshotSeries() {
-  if (file_ >= 0) H5Fclose(static_cast<hid_t>(file_));
+  if (file_ < 0) return;
+  close_or_discard(uncaught_, [this] { close(); }, [this] {
+    H5Fclose(static_cast<hid_t>(file_));
+    file_ = -1;
+    std::filesystem::remove(partial_path(h5_));
+    std::filesystem::remove(partial_path(xdmf_));
+  });
+}
+
+void SnapshotSeries::close() {
+  if (file_ < 0) throw std::logic_error(h5_.string() + ": closed twice");
+  const herr_t status = H5Fclose(static_cast<hid_t>(file_));
+  file_ = -1;
+  if (status < 0) throw std::runtime_error(write_error("HDF5: close failed:", partial_path(h5_)));
+  commit_partial(partial_path(h5_), h5_);
+  write_xdmf(partial_path(xdmf_), h5_.filename().string());
+  commit_partial(partial_path(xdmf_), xdmf_);
 }
 
 void SnapshotSeries::write(const Snapshot& s) {
@@ -118,14 +147,15 @@ void SnapshotSeries::write(const Snapshot& s) {
     write_dataset(g, "stress", t.data(), n, 3);
   }
   H5Gclose(g);
-  H5Fflush(static_cast<hid_t>(file_), H5F_SCOPE_GLOBAL);
+  if (H5Fflush(static_cast<hid_t>(file_), H5F_SCOPE_GLOBAL) < 0)
+    throw std::runtime_error(write_error("HDF5: write failed:", partial_path(h5_)));
   entries_.push_back({name, s.time, n, vel, rho, stress});
-  write_xdmf();
+  write_xdmf(partial_path(xdmf_), partial_path(h5_).filename().string());
 }
 
-void SnapshotSeries::write_xdmf() const {
-  std::ofstream x(xdmf_);
-  const std::string h5 = h5_.filename().string();
+void SnapshotSeries::write_xdmf(const std::filesystem::path& to, const std::string& h5) const {
+  errno = 0;
+  std::ofstream x(to);
   x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
        "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (const Entry& e : entries_) {
@@ -145,9 +175,12 @@ void SnapshotSeries::write_xdmf() const {
     x << "   </Grid>\n";
   }
   x << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  x.close();
+  if (x.fail()) throw std::runtime_error(write_error("write failed:", to));
 }
 
 std::size_t count_snapshots(const std::filesystem::path& h5_path) {
+  quiet_hdf5();
   hid_t f = checked(H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open file");
   hsize_t n = 0;
   H5G_info_t info;
@@ -158,6 +191,7 @@ std::size_t count_snapshots(const std::filesystem::path& h5_path) {
 }
 
 Snapshot read_snapshot(const std::filesystem::path& h5_path, std::size_t index) {
+  quiet_hdf5();
   hid_t f = checked(H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open file");
   const std::string name = group_name(index);
   if (H5Lexists(f, name.c_str(), H5P_DEFAULT) <= 0) {  // a clear message instead of HDF5's error stack
@@ -186,6 +220,7 @@ Snapshot read_snapshot(const std::filesystem::path& h5_path, std::size_t index) 
 }
 
 std::vector<std::pair<std::string, std::string>> snapshot_header(const std::filesystem::path& h5_path) {
+  quiet_hdf5();
   hid_t f = checked(H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), "open file");
   std::vector<std::pair<std::string, std::string>> out;
   auto text = [](hid_t obj, const char* name, const H5A_info_t*, void* data) -> herr_t {

@@ -3,7 +3,9 @@
 // One .h5 file per series: /snapshot_NNNNNN/{position (N x 2), velocity (N x 2), density (N),
 // stress (N x 3: xx, yy, xy)} with attributes time and step; root attributes record the run (driver,
 // code version, date, parameters). The .xdmf file next to it is a temporal collection of polyvertex
-// grids over those datasets and is rewritten after every snapshot, so a killed run stays readable.
+// grids over those datasets. While the series is written, both are <name>.part (io/atomic_output.hpp; the .part
+// sidecar, rewritten after every snapshot, points at the .part file, so a running or killed series is readable);
+// closing renames the .h5 and writes the final sidecar. A series left by an exception is discarded.
 #pragma once
 
 #include <filesystem>
@@ -28,7 +30,10 @@ class SnapshotSeries {
  public:
   /// Creates (truncates) `h5_path` and writes the run's metadata.
   SnapshotSeries(const std::filesystem::path& h5_path, const RunInfo& info);
+  /// Closes as close() does, or discards the series while an exception unwinds; a failure is recorded.
   ~SnapshotSeries();
+  /// Closes the file and gives it and its sidecar their final names; throws naming the file on failure.
+  void close();
   SnapshotSeries(const SnapshotSeries&) = delete;
   SnapshotSeries& operator=(const SnapshotSeries&) = delete;
 
@@ -36,9 +41,10 @@ class SnapshotSeries {
   std::size_t count() const { return entries_.size(); }
 
  private:
-  void write_xdmf() const;
+  void write_xdmf(const std::filesystem::path& to, const std::string& h5_name) const;
   std::filesystem::path h5_, xdmf_;
   long file_ = -1;  // hid_t
+  int uncaught_ = 0;  // std::uncaught_exceptions() at construction
   struct Entry { std::string group; double time; std::size_t n; bool vel, rho, stress; };
   std::vector<Entry> entries_;
 };
