@@ -14,6 +14,7 @@
 #include <csignal>
 #include <set>
 #include <sstream>
+#include <system_error>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -27,10 +28,20 @@ namespace {
 namespace fs = std::filesystem;
 using sph::Vec2;
 
+// The folder of this process's scratch files, removed when the process exits (ctest runs each test in a
+// process of its own: each left a folder in the temporary directory before).
+struct ScratchRoot {
+  fs::path dir;
+  ~ScratchRoot() {
+    std::error_code ignored;
+    fs::remove_all(dir, ignored);
+  }
+};
+
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / ("sph_test_io_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  static const ScratchRoot root{fs::path(::testing::TempDir()) / ("sph_test_io_" + std::to_string(::getpid()))};
+  fs::create_directories(root.dir);
+  return root.dir / name;
 }
 
 sph::RunInfo sample_info() {
