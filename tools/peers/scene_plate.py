@@ -13,7 +13,8 @@ the same spacing. The variants:
   lammps_tlsph  LAMMPS MACHDYN smd/tlsph (total Lagrangian, hourglass control), our clamp and initial mode, its own
   lammps_ulsph  step; smd/ulsph with its own artificial stress 0.3 (tools/peers/lammps_plate.py says what differs)
 The cases: Table 1's three V_f = 0.01 rows and its V_f = 0.05, mu = 0.6 row at the paper's n = 20 (dp = 0.1),
-Table 2's three V_f = 0.01 rows and its two open mu = 0.6 rows at the paper's dp = 0.1 (n = 10), and the
+Table 2's three V_f = 0.01 rows and its two open mu = 0.6 rows at the paper's dp = 0.1 (n = 10), its four rows at
+V_f = 0.03, 0.05 and mu = 0.22, 0.3 (open since 2026-12-07; PySPH's own equations only, ~1.5 h of one core each), and the
 convergence of Table 1's V_f = 0.01 rows over n = 5, 10, 20 (dp = 0.4, 0.2, 0.1); LAMMPS (cases of their own, named
 ..._lammps, ~9 min of one core per variant at dp = 0.1) on Table 1's V_f = 0.01 rows at those three spacings and Table
 2's at dp = 0.1 (tlsph only there).
@@ -57,6 +58,7 @@ def cases(quick):
     t1.append((2.0, 0.05, 0.6, 0.1, FULL[:2]))
     t2 = [(1.0, 0.01, mu, 0.1, FULL[:2] + gray(1.0, 0.01, mu)) for mu in (0.22, 0.3, 0.6)]
     t2 += [(1.0, Vf, 0.6, 0.1, FULL[:2] + gray(1.0, Vf, 0.6)) for Vf in (0.03, 0.05)]
+    t2 += [(1.0, Vf, mu, 0.1, FULL[:1]) for mu in (0.22, 0.3) for Vf in (0.03, 0.05)]
     conv = [(2.0, 0.01, mu, dp, FULL[:2] + ["xsph_gray"]) for mu in (0.22, 0.3, 0.6) for dp in (0.4, 0.2)]
     lmp = [(2.0, 0.01, mu, dp, LAMMPS) for mu in (0.22, 0.3, 0.6) for dp in (0.4, 0.2, 0.1)]
     lmp += [(1.0, 0.01, mu, 0.1, ["lammps_tlsph"]) for mu in (0.22, 0.3, 0.6)]  # ulsph: Table 1's rows only (run time)
