@@ -2,7 +2,7 @@
 #   make figures   deps -> build -> every driver -> plots -> check against published numbers
 #   make test      declaration check -> deps -> build -> GoogleTest (ctest) -> quick smoke run of every driver
 #                  -> quick check -> the report on the quick results -> a few steps of the peers (make peers-quick)
-# Other targets: make check, make paper, make peers, make bench, make bench-ab BASE=<rev>, make bench-peer, make sanitize, make deps, make clean, make check-targets,
+# Other targets: make check, make paper, make peers, make studies, make bench, make bench-ab BASE=<rev>, make bench-peer, make sanitize, make deps, make clean, make check-targets,
 # make list-targets, make list-runs, make archive, make verify-archive FILE=<tar.gz>, make test-paraview, make test-slurm;
 # make figures LAUNCH=slurm RUN_JOBS=<n> on a cluster.
 # Make's dependency graph reruns a driver only when its binary changed. Threads: `figures` and `quick` run
@@ -35,7 +35,7 @@ ORDERED = $(filter $(TARGETS),$(LONGEST_FIRST)) $(filter-out $(LONGEST_FIRST),$(
 DONE    = $(foreach t,$(ORDERED),$(RESULTS)/$(t)/.done)
 FIGS    = $(foreach t,$(ORDERED),$(FIGURES)/$(t).png)
 
-.PHONY: all figures figures-locked test test-locked sanitize check paper status-table bench bench-ab bench-peer peers peers-quick deps build build-drivers configure ctest results plots quick clean help timings \
+.PHONY: all figures figures-locked test test-locked sanitize check paper status-table bench bench-ab bench-peer peers peers-quick studies deps build build-drivers configure ctest results plots quick clean help timings \
         check-targets list-targets list-runs archive verify-archive test-paraview
 .DEFAULT_GOAL := help
 
@@ -310,6 +310,12 @@ peers: deps build
 	$(call apt_ensure,python3-pysph)
 	tools/peers/build_machdyn.sh
 	$(PY) tools/peers/run_peers.py --build $(BUILD) --out $(RESULTS)/peers --threads $(PEER_THREADS_RUN) $(PEERS_FLAGS)
+# make studies (issue 46 item 2): the paper's unstated choices, one at a time, each a run job of its own
+# (tools/studies.py says which), and the open rows' values under each in results/studies/<study>_sensitivity.csv.
+# Outside make figures (about 1.5 h of one core per choice of the plate study); an interrupted one resumes.
+studies: deps build
+	$(PY) tools/studies.py --bin $(BIN) --out $(RESULTS)/studies --jobs $(JOBS) $(STUDIES_FLAGS)
+
 peers-quick: deps build
 	$(call apt_ensure,python3-pysph)
 	tools/peers/build_machdyn.sh

@@ -119,6 +119,38 @@ def peers_html(results):
     return "".join(out)
 
 
+def studies_html(results):
+    """The sensitivity tables of make studies (results/studies/<study>_sensitivity.csv, tools/studies.py): per
+    row, its value under each of the paper's unstated choices beside the published number."""
+    paths = sorted(glob.glob(os.path.join(results, "studies", "*_sensitivity.csv")))
+    if not paths:
+        return ("<p>No sensitivity tables in these results (<code>make studies</code> writes "
+                "<code>results/studies/&lt;study&gt;_sensitivity.csv</code>; <code>make figures</code> does not run it).</p>")
+    out = ["<p>One choice the paper does not state varied at a time, everything else at make figures' settings "
+           "(<code>tools/studies.py</code> lists them); a row's value under each, its difference from the published "
+           "number, and whether that lies within the row's tolerance.</p>"]
+    for path in paths:
+        t = pd.read_csv(path, dtype=str, keep_default_na=False)
+        variants = list(dict.fromkeys(t.variant))
+        choices = dict(zip(t.variant, t.choice))
+        head = "<th>row</th><th>kind</th><th>published</th>" + "".join(
+            f'<th title="{html.escape(choices[v])}">{html.escape(v)}</th>' for v in variants)
+        body = []
+        for (target, quantity), rows in t.groupby(["target", "quantity"], sort=False):
+            by = {r.variant: r for r in rows.itertuples()}
+            first = rows.iloc[0]
+            cells = "".join(
+                f"<td>{html.escape(by[v].value)} ({html.escape(by[v].difference)}){' *' if by[v].within == 'true' else ''}</td>"
+                if v in by else "<td></td>" for v in variants)
+            body.append(f"<tr><td>{html.escape(target)} {html.escape(quantity)}</td><td>{html.escape(first.kind)}</td>"
+                        f"<td>{html.escape(first.published)}</td>{cells}</tr>")
+        name = os.path.basename(path)[: -len("_sensitivity.csv")]
+        out.append(f"<h3>{html.escape(name)}</h3><p>* within the row's tolerance. Choices: "
+                   + "; ".join(f"<b>{html.escape(v)}</b>: {html.escape(choices[v])}" for v in variants)
+                   + f"</p><table><tr>{head}</tr>{''.join(body)}</table>")
+    return "".join(out)
+
+
 def driver_seconds(path):
     """{target: seconds of driver time} from results/timings.csv (a split target's runs, labelled T/<run>, summed into T)."""
     out = {}
@@ -212,7 +244,8 @@ row that does not hold.</p>
     parts.append("<h2>The targets</h2>" + overview_html(targets, check, driver_seconds(os.path.join(args.results, "timings.csv"))))
     parts.append("<h2>Contents</h2><ul>" + "".join(
         f'<li><a href="#{t.target}">{html.escape(t.target)}: {html.escape(t.title)}</a></li>' for _, t in targets.iterrows())
-                 + '<li><a href="#peers">Independent codes</a></li><li><a href="#timings">Run times</a></li></ul>')
+                 + '<li><a href="#peers">Independent codes</a></li><li><a href="#studies">Unstated choices</a></li>'
+                 + '<li><a href="#timings">Run times</a></li></ul>')
     for _, t in targets.iterrows():
         parts.append(f'<h2 id="{t.target}">{html.escape(t.target)}: {html.escape(t.title)}</h2>')
         parts.append(f"<p><i>{html.escape(t.work)}</i></p><p>{html.escape(t.description)}</p>")
@@ -223,6 +256,7 @@ row that does not hold.</p>
         rows = check[check.target == t.target]
         parts.append(table_html(rows) if len(rows) else "<p>No published numbers are checked for this target.</p>")
     parts.append('<h2 id="peers">Independent codes on our scenes (make peers)</h2>' + peers_html(args.results))
+    parts.append('<h2 id="studies">The paper\'s unstated choices (make studies)</h2>' + studies_html(args.results))
     parts.append('<h2 id="timings">Run times</h2>' + timings_html(os.path.join(args.results, "timings.csv")))
     parts.append("</body></html>")
     os.makedirs(os.path.dirname(args.out), exist_ok=True)

@@ -7,6 +7,8 @@
 //   dp = 0.1 (INFERRED: the published theory column is reproduced only with the plate thickness measured
 //     between the outermost particle centres at dp = 0.1, see reference/G-tab1.csv; n = 20 of Fig 4).
 //     The resolution dependence is measured by G-fig4; --dp 0.2 runs ~8x faster.
+//   rows across H: H / dp at half spacings, the plate exactly H thick (CHOSEN; --centres-on-faces lays H / dp + 1
+//     with the outer centres on the faces, as PySPH's plate example: make studies measures both)
 //   clamp: the plate continues a length --clamp-length (CHOSEN = 2, i.e. H for Table 1) between three
 //     fixed layers above and below and three behind (3 dp covers the 2h support)
 //   artificial viscosity alpha = beta = 1 (CHOSEN: Monaghan's usual values; the paper gives none;
@@ -65,7 +67,7 @@ struct Params {
   int table = 0;
   long max_steps = -1;
   int crossings = 1;
-  bool same_n = true, coarse_reference = true;
+  bool same_n = true, coarse_reference = true, centres_on_faces = false;
   std::vector<std::string> only;
 };
 
@@ -81,6 +83,7 @@ void declare(sph::Driver& d, Params& p) {
   d.param("paper-dp", p.paper_dp, "the spacing of the paper's runs, used only by the theory reading H - dp").positive();
   d.param("same-n-reading", p.same_n, "Table 2 also at Table 1's particles across the thickness (dp H / 2), the reading of issue 14");
   d.param("coarse-reference", p.coarse_reference, "the n = 10 run whose excess over theory bounds every row's period (T_bound_*)");
+  d.param("centres-on-faces", p.centres_on_faces, "n + 1 rows across with the outer centres on the faces (PySPH's plate example), a plate H + dp thick; default n rows at half spacings (make studies)");
   d.param("max-steps", p.max_steps, "stop each run after this many steps (smoke test); -1 = no limit");
   std::vector<std::string> row_names;
   for (const Row& r : kRows) row_names.push_back(key(r));
@@ -113,6 +116,7 @@ scenes::PlateRunResult step(const Params& p, const Row& row, double spacing, con
   row_scheme.mu = row.mu;
   scenes::PlateRunSpec s = scenes::table_plate_run(row.H, row.Vf, spacing, p.clamp, row_scheme, p.periods, p.crossings);
   s.max_steps = p.max_steps;
+  s.plate.centres_on_faces = p.centres_on_faces;
   return scenes::run_plate(s, {}, "plate " + (tag.empty() ? key(row) : tag + "_" + key(row)));
 }
 

@@ -67,13 +67,16 @@ Plate make_plate(const PlateSpec& s, const sph::GrayParameters& scheme) {
   const double x0 = -s.clamp_length;
   check_size(s);
   const int nx = static_cast<int>(std::lround((s.L + s.clamp_length) / s.dp));
-  const int ny = static_cast<int>(std::lround(nrows));
+  // Row j's centre at (j + first) dp: half spacings (n rows), or the outer centres on the faces (n + 1 rows); the
+  // fixed layers continue the rows' spacing beyond the faces, at (l + gap) dp.
+  const int ny = static_cast<int>(std::lround(nrows)) + (s.centres_on_faces ? 1 : 0);
+  const double first = s.centres_on_faces ? 0.0 : 0.5, gap = s.centres_on_faces ? 1.0 : 0.5;
   double best = std::numeric_limits<double>::max();
   std::mt19937 rng(s.seed);
   std::uniform_real_distribution<double> jitter(-s.perturbation * s.dp, s.perturbation * s.dp);
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
-      const sph::Vec2 x(x0 + (i + 0.5) * s.dp, (j + 0.5) * s.dp);
+      const sph::Vec2 x(x0 + (i + 0.5) * s.dp, (j + first) * s.dp);
       const double vy = x.x() > 0 ? c0 * cantilever_mode_velocity(x.x(), s.L, s.Vf) : 0.0;
       const sph::Vec2 shake = s.perturbation > 0 ? sph::Vec2(jitter(rng), jitter(rng)) : sph::Vec2::Zero();
       p.body.add(x + shake, sph::Vec2(0.0, vy), m, rho0);
@@ -85,10 +88,10 @@ Plate make_plate(const PlateSpec& s, const sph::GrayParameters& scheme) {
   for (int l = 0; l < layers; ++l) {
     for (int i = -layers; i < static_cast<int>(std::lround(ncols_clamp)); ++i) {
       const double x = x0 + (i + 0.5) * s.dp;
-      p.body.add({x, -(l + 0.5) * s.dp}, {0, 0}, m, rho0, sph::Motion::Fixed);
-      p.body.add({x, s.H + (l + 0.5) * s.dp}, {0, 0}, m, rho0, sph::Motion::Fixed);
+      p.body.add({x, -(l + gap) * s.dp}, {0, 0}, m, rho0, sph::Motion::Fixed);
+      p.body.add({x, s.H + (l + gap) * s.dp}, {0, 0}, m, rho0, sph::Motion::Fixed);
     }
-    for (int j = 0; j < ny; ++j) p.body.add({x0 - (l + 0.5) * s.dp, (j + 0.5) * s.dp}, {0, 0}, m, rho0, sph::Motion::Fixed);
+    for (int j = 0; j < ny; ++j) p.body.add({x0 - (l + 0.5) * s.dp, (j + first) * s.dp}, {0, 0}, m, rho0, sph::Motion::Fixed);
   }
   const double margin = 0.6 * s.L;  // the tip swings by ~Vf L / (kL)... well inside this at the paper's Vf
   p.body.dp = s.dp;

@@ -19,6 +19,9 @@ struct PlateSpec {
   double Vf = 0.01;            ///< tip speed over c0 (7.3)
   double perturbation = 0.0;   ///< random displacement of the free particles, uniform in +-perturbation*dp
   unsigned seed = 1;           ///< of the perturbation
+  /// n + 1 rows with the outer centres on the faces y = 0 and y = H (PySPH's plate example), a plate H + dp
+  /// thick, instead of n = H / dp rows at half spacings (issue 46's sensitivity study: the paper does not say)
+  bool centres_on_faces = false;
 };
 
 /// kL of the fundamental cantilever mode: the first root of cos(kL) cosh(kL) = -1 (7.2), by GSL (Brent).
@@ -39,7 +42,7 @@ struct Plate {
 };
 
 /// Builds the plate: free particles on a square lattice of spacing dp filling [-clamp_length, L] x [0, H]
-/// (centres at half-spacings, so the plate is exactly H thick), fixed layers above and below the clamped
+/// (centres at half-spacings, so the plate is exactly H thick; with centres_on_faces, rows at y = 0, dp, .., H), fixed layers above and below the clamped
 /// part and behind its end, and the initial velocity (7.3) on the particles with x > 0; masses rho0 dp^2 and
 /// velocities in units of c0 from the scheme's parameters.
 /// Refuses (std::invalid_argument, before anything is allocated) a plate whose particles cannot fit in memory
