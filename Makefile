@@ -312,7 +312,8 @@ peers: deps build
 	$(PY) tools/peers/run_peers.py --build $(BUILD) --out $(RESULTS)/peers --threads $(PEER_THREADS_RUN) $(PEERS_FLAGS)
 # make studies (issue 46 item 2): the paper's unstated choices, one at a time, each a run job of its own
 # (tools/studies.py says which), and the open rows' values under each in results/studies/<study>_sensitivity.csv.
-# Outside make figures (about 1.5 h of one core per choice of the plate study); an interrupted one resumes.
+# Outside make figures (the plate study: 21 jobs per choice, 13-40 min of one core each choice, its eight about 1.5 h on 2
+# cores); an interrupted one resumes.
 studies: deps build
 	$(PY) tools/studies.py --bin $(BIN) --out $(RESULTS)/studies --jobs $(JOBS) $(STUDIES_FLAGS)
 
