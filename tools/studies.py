@@ -15,12 +15,13 @@ whether it lies within the row's tolerance; a choice whose jobs have not all run
 import argparse
 import concurrent.futures
 import csv
-import io
 import os
 import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "experiments", "peers"))
+from peer_io import read_table  # noqa: E402  (a CSV with '#' comment lines, as dicts)
 
 PLATE_DRIVER = "gray2001_table1_2_plate_periods"
 # Every row of Tables 1 and 2: a choice that reproduces an open row must also keep the others (the second
@@ -44,16 +45,11 @@ PLATE_VARIANTS = [
 STUDIES = {"plate": (PLATE_DRIVER, PLATE_ROWS, PLATE_VARIANTS, ("G-tab1", "G-tab2"), "T_sph_")}
 
 
-def read_rows(path):
-    lines = [l for l in open(path) if not l.lstrip().startswith("#")]
-    return list(csv.DictReader(io.StringIO("".join(lines))))
-
-
 def published(targets, prefix):
     """{quantity: (target, published, tolerance, compare, status kind)} of the studied rows."""
     out = {}
     for t in targets:
-        for r in read_rows(os.path.join(ROOT, "reference", f"{t}.csv")):
+        for r in read_table(os.path.join(ROOT, "reference", f"{t}.csv")):
             if r["quantity"].startswith(prefix):
                 kind = r["expect"] if r["expect"] != "discrepancy" else r.get("kind", "") or "discrepancy"
                 out[r["quantity"]] = (t, float(r["published"]), float(r["tolerance"]), r["compare"], kind)
@@ -79,7 +75,7 @@ def run_job(binary, driver, args, row, d):
 
 
 def values(d, driver):
-    return {r["quantity"]: r["value"] for r in read_rows(os.path.join(d, f"values_{driver}.csv"))}
+    return {r["quantity"]: r["value"] for r in read_table(os.path.join(d, f"values_{driver}.csv"))}
 
 
 def table(out, study, driver, rows, variants, targets, prefix):
