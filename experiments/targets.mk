@@ -73,7 +73,7 @@ BENCH_DRIVERS += bench_gray_scenes
 # ---- Hoover, Hoover & Merritt 2004 (src/spam_*, src/core/rk4.hpp, src/spam/molecular_dynamics.*,
 #      experiments/hoover2004/scenes/hexagon.*). Full-run times on 2 idle cores: H-fig1 ~45 s,
 #      H-fig3 ~15 s, hexagon drivers ~10-60 s each, H-72 ~5-8 min (72 revolutions over 2 threads). ----
-TARGETS += H-fig1 H-fig2 H-fig3 H-fig4 H-fig5 H-fig6 H-fig7 H-gauss H-72
+TARGETS += H-fig1 H-fig2 H-fig3 H-fig4 H-fig5 H-fig6 H-fig7 H-gauss H-72 H-wp
 H-fig1_DRIVERS := hoover2004_fig1_tensile_instability
 H-fig2_DRIVERS := hoover2004_fig2_sheared_square
 H-fig3_DRIVERS := hoover2004_fig3_plane_waves
@@ -83,6 +83,8 @@ H-fig6_DRIVERS := hoover2004_fig6_angular_momentum
 H-fig7_DRIVERS := hoover2004_fig7_torque_scaling
 H-gauss_DRIVERS := hoover2004_gauss_multipliers
 H-72_DRIVERS := hoover2004_72_combinations
+# Work-precision and time-step stability of the hexagon's SPAM (beyond the paper; issue 43 item 6): ~1 min.
+H-wp_DRIVERS := hoover2004_hexagon_work_precision
 # The 72 combinations as jobs of their own (each named by its label with '_' for '/').
 H-72_RUN_DRIVER := hoover2004_72_combinations
 BENCH_DRIVERS += bench_hexagon

@@ -85,3 +85,24 @@ if res is not None:
         axz.set_ylabel("particle-scale disorder (black)")
         ax.legend(fontsize=6)
 save(fig, args.figures, "I-hole", f)
+
+# Work-precision (issue 43 item 6): the checked quantity, the smoothed stress at the hole's top (0, R), against
+# the wall time of its run, its error measured from the resolution study's Richardson extrapolation.
+rv_path = os.path.join(args.results, "values_ismail2009_fig5_13to5_15_hole_resolution.csv")
+if res is not None and os.path.exists(rv_path):
+    rv = read(args.results, "values_ismail2009_fig5_13to5_15_hole_resolution.csv").set_index("quantity")["value"]
+    if "sigma1_hole_top_MPa_richardson" in rv.index:
+        ref = rv["sigma1_hole_top_MPa_richardson"]
+        fig, ax = plt.subplots(figsize=(5.5, 4))
+        for series, mk, lab in (("controlled", "o-", "with the control (the series the Richardson value and the rows use)"),):
+            r = res[res["series"] == series].sort_values("n")
+            if len(r):
+                err = (r["smoothed_sigma1_hole_top_MPa"] - ref).abs() / ref
+                ax.loglog(r["wall_s"], err, mk, label=lab)
+                for w, e, n in zip(r["wall_s"], err, r["n"]):
+                    ax.annotate(f"{int(n)} x {int(n)}", (w, e), fontsize=6)
+        ax.set_xlabel("wall time of the run [s] (one thread)")
+        ax.set_ylabel("|smoothed sigma_1 at (0, R) - Richardson| / Richardson")
+        ax.set_title(f"work-precision, Richardson value {ref:.2f} MPa")
+        ax.legend(fontsize=7)
+        save(fig, args.figures, "I-hole_wp", res)
