@@ -16,6 +16,8 @@
 // thesis's scheme; --hourglass adds it). Writes fields.csv, history_fig5_15.csv (the run's smoothed hole stress,
 // peak stress and largest speed: not history.csv, which the resolution driver of the same target writes) and the
 // same snapshots as snapshots.h5 (+ .xdmf).
+// Stability (issue 43 item 6): the time-step factor doubled from the figures' 0.3 until the 21 x 21 run becomes
+// non-finite, then bisected to 1% (--stability false skips it; ~5 s).
 // The resolution study up to 201 x 201 is ismail2009_fig5_13to5_15_hole_resolution (its own driver: ~850 s of single-threaded runs, split into run jobs).
 #include <cmath>
 #include <string>
@@ -44,6 +46,10 @@ int main(int argc, char** argv) {
   d.param("hooke", p.hooke, "linear (Hooke, small strain) instead of neo-Hookean");
   d.param("hourglass", p.hourglass, "zero-energy-mode control gamma (TlConfig2D::hourglass)").non_negative();
   d.param("variational", p.variational, "boundary scheme: variational (true) or ghost reflection (false)");
+  bool stability = true;
+  double bisect_to = 0.01;
+  d.param("stability", stability, "measure the largest stable time-step factor (the margin row)");
+  d.param("bisect-to", bisect_to, "relative width to which the stable factor is bisected").positive();
   return d.run(argc, argv, [&] {
     auto f = d.csv("fields.csv", {"t", "X", "Y", "ux", "uy", "sigma1", "T11", "T22", "T12"});
     sph::SnapshotSeries snaps(d.out_dir() / "snapshots.h5", d.info());
@@ -72,5 +78,24 @@ int main(int argc, char** argv) {
     d.value("kirsch_MPa", 3 * p.traction / 1e6, "3 sigma, infinite sheet");
     d.value("heywood_MPa", scenes::heywood_gross_concentration(p.R / p.a) * p.traction / 1e6, "finite width d/W = R/a");
     d.value("wall_s", r.wall_s, "time loop");
+    if (!stability) return;
+    auto stable = [&](double factor) {
+      scenes::HoleParams q = p;
+      q.dt_factor = factor;
+      return scenes::run_hole(q).finite;
+    };
+    double lo = p.dt_factor, hi = 2 * p.dt_factor;
+    while (stable(hi)) {
+      lo = hi;
+      hi *= 2;
+      if (hi > 1e3 * p.dt_factor) throw std::runtime_error("no unstable factor below 1000 x --dt-factor");
+    }
+    while (hi - lo > bisect_to * lo) {
+      const double mid = 0.5 * (lo + hi);
+      (stable(mid) ? lo : hi) = mid;
+    }
+    d.value("largest_stable_dt_factor", lo, "largest time-step factor (dt c_L / h) of the bisection whose run stays finite");
+    d.value("smallest_unstable_dt_factor", hi, "smallest factor of the bisection whose run became non-finite");
+    d.value("stability_margin_dt_factor", lo / p.dt_factor, "largest stable factor / --dt-factor");
   });
 }
