@@ -115,6 +115,17 @@ def plate_period_3d_moduli(mu, H, dp=0.1, K=1.0):
     return plate_period(9 * K * mu / (3 * K + mu), (3 * K - 2 * mu) / (2 * (3 * K + mu)), H - dp)
 
 
+def plate_period_eq28_as_printed(mu, H, dp=0.1, K=1.0):
+    """(7.1) with nu from Gray's (2.8) as printed, (3K/mu - 2)/(2(3K/mu + 2)), E = 2 mu (1 + nu), thickness H - dp."""
+    nu = (3 * K / mu - 2) / (2 * (3 * K / mu + 2))
+    return plate_period(2 * mu * (1 + nu), nu, H - dp)
+
+
+def plate_period_thickness_as_printed(mu, H, K=1.0):
+    """(7.1) with the printed thickness H and the 3D moduli of the adopted reading."""
+    return plate_period(9 * K * mu / (3 * K + mu), (3 * K - 2 * mu) / (2 * (3 * K + mu)), H)
+
+
 # ---- Hoover, Hoover & Merritt 2004, Sec. V and IX: linearised SPAM on the triangular lattice -------------------
 def spam_lattice_period_ratio(n=24, h=3.0, m=1.0):
     """T_sph / T_elastic of the standing waves, k = 2 pi / (n sqrt(3)/2): omega^2 = M m^2 S^2 / rho^3 against
@@ -450,6 +461,17 @@ ENTRIES = {
     ("G-disp", "fc_h1p5_coefficient_of_mu"): (lambda: _fc(1.5, "A_x") ** 2, "A_x^2, face-centred, h = 1.5 dp"),
     ("G-tab1", "T_theory_H2_mu0.22"): (lambda: plate_period_3d_moduli(0.22, 2.0), "(7.1), 3D moduli, H - dp"),
     ("G-tab2", "T_theory_H1_mu0.22"): (lambda: plate_period_3d_moduli(0.22, 1.0), "(7.1), 3D moduli, H - dp"),
+    ("G-tab1", "T_theory_eq2.8_H2_mu0.3"): (lambda: plate_period_eq28_as_printed(0.3, 2.0), "(7.1), nu of (2.8) as printed, H - dp"),
+    ("G-tab1", "T_theory_eq2.8_H2_mu0.6"): (lambda: plate_period_eq28_as_printed(0.6, 2.0), "(7.1), nu of (2.8) as printed, H - dp"),
+    ("G-tab1", "T_theory_thickness_H_H2_mu0.22"): (lambda: plate_period_thickness_as_printed(0.22, 2.0), "(7.1), 3D moduli, printed thickness H"),
+    ("G-tab1", "T_theory_thickness_H_H2_mu0.3"): (lambda: plate_period_thickness_as_printed(0.3, 2.0), "(7.1), 3D moduli, printed thickness H"),
+    ("G-tab1", "T_theory_thickness_H_H2_mu0.6"): (lambda: plate_period_thickness_as_printed(0.6, 2.0), "(7.1), 3D moduli, printed thickness H"),
+    ("G-tab2", "T_theory_eq2.8_H1_mu0.3"): (lambda: plate_period_eq28_as_printed(0.3, 1.0), "(7.1), nu of (2.8) as printed, H - dp"),
+    ("G-tab2", "T_theory_eq2.8_H1_mu0.6"): (lambda: plate_period_eq28_as_printed(0.6, 1.0), "(7.1), nu of (2.8) as printed, H - dp"),
+    ("G-tab2", "T_theory_eq2.8_H1_mu0.22"): (lambda: plate_period_eq28_as_printed(0.22, 1.0), "(7.1), nu of (2.8) as printed, H - dp"),
+    ("G-tab2", "T_theory_thickness_H_H1_mu0.22"): (lambda: plate_period_thickness_as_printed(0.22, 1.0), "(7.1), 3D moduli, printed thickness H"),
+    ("G-tab2", "T_theory_thickness_H_H1_mu0.3"): (lambda: plate_period_thickness_as_printed(0.3, 1.0), "(7.1), 3D moduli, printed thickness H"),
+    ("G-tab2", "T_theory_thickness_H_H1_mu0.6"): (lambda: plate_period_thickness_as_printed(0.6, 1.0), "(7.1), 3D moduli, printed thickness H"),
     ("H-fig3", "period_transverse"): (lambda: spam_periods()["T_sph_t"], "linearised SPAM lattice period"),
     ("H-fig3", "omega_over_k_transverse"): (lambda: spam_periods()["Ly"] / spam_periods()["T_sph_t"],
                                             "wavelength / lattice period"),

@@ -153,6 +153,12 @@ void write_theory(sph::Driver& d, const Params& p) {
         d.value("T_theory_eq2.8_" + theory_key(H, mu).substr(9), scenes::plate_theory_period(2 * mu * (1 + nu), nu, H - p.paper_dp, 20.0, 1.0),
                 "(7.1) with thickness H - paper_dp, nu from (2.8) as printed, E = 2 mu (1 + nu)");
       }
+  // (7.1) with the thickness as printed, H (the 3D moduli of the adopted reading): issue 46 item 4, a row of its own.
+  for (const double H : {2.0, 1.0})
+    for (const double mu : {0.22, 0.30, 0.60})
+      if (in_table(p, H))
+        d.value("T_theory_thickness_H_" + theory_key(H, mu).substr(9), scenes::plate_theory_period(mu, H, 20.0),
+                "(7.1) with the printed thickness H, 3D E and nu as the adopted reading, plane strain");
 }
 
 // The upper end of the rows' own bands (reference/G-tab1.csv, G-tab2.csv). The period converges from
