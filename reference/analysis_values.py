@@ -459,6 +459,11 @@ ENTRIES = {
                                                       "2 B_x / f_xx, face-centred, h = dp, n = 4 (5.5), (5.14)"),
     ("G-disp", "fc_h1p5_coefficient_of_P"): (lambda: 2 * _fc(1.5, "B_y"), "2 B_y, face-centred, h = 1.5 dp"),
     ("G-disp", "fc_h1p5_coefficient_of_mu"): (lambda: _fc(1.5, "A_x") ** 2, "A_x^2, face-centred, h = 1.5 dp"),
+    ("G-disp", "principal_stress_6_3_as_printed_trace_error"): (
+        lambda: 4 * math.sin(0.5 * math.atan2(2.0, 1.0)) * math.cos(0.5 * math.atan2(2.0, 1.0)),
+        "4 s c sxy, theta of (6.1), stress (1, 0, 1): the trace (6.2) + (6.3) as printed adds"),
+    ("G-fig8", "strain_t400_each_band_at_5e-6"): (lambda: 2 * (0.5 * 5e-6 * 400 ** 2) / 3,
+                                                  "two ends, each 5e-6 t^2 / 2 at t = 400, over the 3 cm slab"),
     ("G-tab1", "T_theory_H2_mu0.22"): (lambda: plate_period_3d_moduli(0.22, 2.0), "(7.1), 3D moduli, H - dp"),
     ("G-tab2", "T_theory_H1_mu0.22"): (lambda: plate_period_3d_moduli(0.22, 1.0), "(7.1), 3D moduli, H - dp"),
     ("G-tab1", "T_theory_eq2.8_H2_mu0.3"): (lambda: plate_period_eq28_as_printed(0.3, 2.0), "(7.1), nu of (2.8) as printed, H - dp"),

@@ -225,6 +225,13 @@ int main(int argc, char** argv) {
     std::vector<std::string> names;
     for (const auto& r : plan) names.push_back(r.name);
     if (jobs.handled(names, [&](std::size_t i) { scenes::write_slab_run(d, "slab", step(d, p, plan[i])); })) return;
+    // Sec 7.3's loading as printed and as read (issue 46 item 4: each a row): the particles 0.2 from each end
+    // accelerate at 5e-6, so each end moves 2.5e-6 t^2 = 0.4 at t = 400 and the 3-long slab stretches by 0.8;
+    // the printed strain 0.13 is 0.4 / 3, the reading in which 5e-6 is the ends' relative acceleration.
+    d.value("strain_t400_each_band_at_5e-6", 2 * (0.5 * 5e-6 * 400.0 * 400.0) / 3.0,
+            "as printed: each end moves 2.5e-6 t^2, the strain (two ends) / 3 at t = 400");
+    d.value("strain_t400_separation_at_5e-6", 0.5 * 5e-6 * 400.0 * 400.0 / 3.0,
+            "the reading: the ends' separation grows by 2.5e-6 t^2, / 3 at t = 400");
     std::vector<scenes::SlabRunResult> result;
     for (const auto& run : plan)
       result.push_back(jobs.result(run.name, [&](const sph::RunFolder& f) { return read_run(d, run, f); }, [&] { return step(d, p, run); }));

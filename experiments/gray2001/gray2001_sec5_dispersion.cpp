@@ -162,6 +162,16 @@ int main(int argc, char** argv) {
     write_square(d, sums, n);
     write_face_centred(d, sums, n, n_max, found);
 
+    // Eqs (6.2)-(6.3) as printed (issue 46 item 4): sigma_yy' = s^2 sxx + 2sc sxy + c^2 syy with theta from (6.1).
+    // A rotation to principal axes keeps the trace; the printed + 2sc (the rotation has - 2sc, which
+    // artificial_stress.hpp uses) adds 4 sc sxy to it. Test stress (sxx, syy, sxy) = (1, 0, 1).
+    {
+      const double sxx = 1, syy = 0, sxy = 1, theta = 0.5 * std::atan2(2 * sxy, sxx - syy);
+      const double c = std::cos(theta), s = std::sin(theta);
+      const double xx = c * c * sxx + 2 * s * c * sxy + s * s * syy, yy_printed = s * s * sxx + 2 * s * c * sxy + c * c * syy;
+      d.value("principal_stress_6_3_as_printed_trace_error", std::abs(xx + yy_printed - (sxx + syy)),
+              "|trace of (6.2)-(6.3) as printed - trace|, stress (1, 0, 1)");
+    }
     // Face-centred cells, h = 1.5 dp: the transverse stability condition (5.30).
     const DispersionSums fc15 = sums(FC, 1.5, n);
     d.value("fc_h1p5_coefficient_of_P", 2 * fc15.B_y, "2 B_y of (5.28) at h = 1.5 dp");

@@ -238,6 +238,9 @@ void BarStudy::three_materials() {
   const scenes::SmoothedPulse p_mid(p0, pulse, p.smooth_mid);
   const std::vector<std::pair<std::string, Material>> mats{
       {"1", {p.rho, p.E}}, {"2", {p.rho, p.E / 2}}, {"3", {p.rho / 2, p.E}}};
+  // Eq (4.38) as printed, c_L = sqrt((lambda + 2 mu) / rho), for each material (issue 46 item 4: its own rows).
+  for (const auto& [id, m] : mats)
+    d.value("c_L_eq4_38_material" + id, std::sqrt(modulus_of(m, "p_wave") / m.rho), "eq (4.38) as printed, m/s");
   for (const std::string reading : {"p_wave", "young"}) {
     for (const auto& [id, m] : mats) {
       const double c = std::sqrt(modulus_of(m, reading) / m.rho);
