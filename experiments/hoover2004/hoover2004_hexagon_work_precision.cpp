@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "frame/driver.hpp"
+#include "frame/stability_limit.hpp"
 #include "hoover2004/scenes/hexagon.hpp"
 #include "spam/spam_solver.hpp"
 
@@ -79,24 +80,14 @@ int main(int argc, char** argv) {
     d.value("L_loss_120deg_finest", ref120, "1 - L/L0 at 120 degrees, finest step");
 
     // Stability: doubling, then bisection.
-    auto stable = [&](double dt) {
+    const StabilityLimit limit = largest_stable_step(s.dt, bisect_to, [&](double dt) {
       scenes::HexagonSetup q = s;
       q.dt = dt;
       q.revolutions = stability_revolutions;
       q.sample_every = 1;
       return !scenes::run_hexagon_spam(q, o, "spam_cont").failed;
-    };
-    if (!stable(s.dt)) throw std::runtime_error("the default step fails: no stability margin to measure");
-    double lo = s.dt, hi = 2 * s.dt;
-    while (stable(hi)) {
-      lo = hi;
-      hi *= 2;
-      if (hi > 1e3 * s.dt) throw std::runtime_error("no failing step below 1000 x the default");
-    }
-    while (hi - lo > bisect_to * lo) {
-      const double mid = 0.5 * (lo + hi);
-      (stable(mid) ? lo : hi) = mid;
-    }
+    });
+    const double lo = limit.stable, hi = limit.failing;
     d.value("largest_stable_dt", lo, "largest step of the bisection whose run of stability-revolutions survives");
     d.value("smallest_failing_dt", hi, "smallest failing step of the bisection");
     d.value("stability_margin_spam_cont", lo / s.dt, "largest stable step / the figures' step");

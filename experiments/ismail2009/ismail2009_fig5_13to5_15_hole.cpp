@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "frame/driver.hpp"
+#include "frame/stability_limit.hpp"
 #include "ismail2009/scenes/hole.hpp"
 #include "io/snapshot.hpp"
 #include "ismail2009/scenes/domain_2d.hpp"
@@ -79,21 +80,12 @@ int main(int argc, char** argv) {
     d.value("heywood_MPa", scenes::heywood_gross_concentration(p.R / p.a) * p.traction / 1e6, "finite width d/W = R/a");
     d.value("wall_s", r.wall_s, "time loop");
     if (!stability) return;
-    auto stable = [&](double factor) {
+    const sph::StabilityLimit limit = sph::largest_stable_step(p.dt_factor, bisect_to, [&](double factor) {
       scenes::HoleParams q = p;
       q.dt_factor = factor;
       return scenes::run_hole(q).finite;
-    };
-    double lo = p.dt_factor, hi = 2 * p.dt_factor;
-    while (stable(hi)) {
-      lo = hi;
-      hi *= 2;
-      if (hi > 1e3 * p.dt_factor) throw std::runtime_error("no unstable factor below 1000 x --dt-factor");
-    }
-    while (hi - lo > bisect_to * lo) {
-      const double mid = 0.5 * (lo + hi);
-      (stable(mid) ? lo : hi) = mid;
-    }
+    });
+    const double lo = limit.stable, hi = limit.failing;
     d.value("largest_stable_dt_factor", lo, "largest time-step factor (dt c_L / h) of the bisection whose run stays finite");
     d.value("smallest_unstable_dt_factor", hi, "smallest factor of the bisection whose run became non-finite");
     d.value("stability_margin_dt_factor", lo / p.dt_factor, "largest stable factor / --dt-factor");
